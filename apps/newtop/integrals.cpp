@@ -1,0 +1,54 @@
+// newtop integrals SCENARIO.toml: the first integrals at the initial state and which are conserved.
+
+#include <iostream>
+#include <memory>
+
+#include "command.hpp"
+#include "newtop/io/output.hpp"
+#include "newtop/io/scenario.hpp"
+#include "summary.hpp"
+
+namespace newtop::app {
+namespace {
+
+struct IntegralsArgs {
+  std::string scenario;
+  bool json = false;
+};
+
+int run(const IntegralsArgs& a) {
+  const io::Scenario sc = io::load_scenario(a.scenario);
+  const IntegralValues v = integrals(sc.model, sc.initial);
+  const auto conserved = conserved_integrals(sc.model);
+  if (a.json) {
+    io::Json j;
+    j["integrals"] = io::to_json(v);
+    j["conserved"] = conserved;
+    j["model"] = model_json(sc.model);
+    std::cout << j.dump(2) << '\n';
+    return kExitOk;
+  }
+  std::cout << "newtop integrals " << sc.source << "\n";
+  print_model(std::cout, sc.model);
+  std::cout.precision(17);
+  std::cout << "energy     " << v.energy << "\narea       " << v.area << "\ngeometric  "
+            << v.geometric << "\n";
+  if (v.brun) std::cout << "brun       " << *v.brun << "\n";
+  if (v.lagrange) std::cout << "lagrange   " << *v.lagrange << "\n";
+  std::cout << "conserved:";
+  for (const auto& c : conserved) std::cout << " " << c;
+  std::cout << "\n";
+  return kExitOk;
+}
+
+const RegisterCommand reg{Command{
+    "integrals", "First integrals at the initial state, and which are conserved for the model",
+    [](CLI::App& sub) -> std::function<int()> {
+      auto a = std::make_shared<IntegralsArgs>();
+      sub.add_option("scenario", a->scenario, "scenario file (TOML)")->required();
+      sub.add_flag("--json", a->json, "print one JSON object");
+      return [a] { return run(*a); };
+    }}};
+
+}  // namespace
+}  // namespace newtop::app

@@ -1,0 +1,104 @@
+#include "summary.hpp"
+
+#include <cstdio>
+#include <iomanip>
+
+namespace newtop::app {
+namespace {
+
+std::string fmt(double x, int digits = 16) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+  return buf;
+}
+
+std::string fmt(const Vec3& v, int digits = 16) {
+  return "[" + fmt(v.x(), digits) + ", " + fmt(v.y(), digits) + ", " + fmt(v.z(), digits) + "]";
+}
+
+}  // namespace
+
+io::Json model_json(const Model& m) {
+  io::Json j;
+  j["inertia"] = io::to_json(m.body.inertia());
+  j["mass"] = m.body.mass();
+  j["center_of_mass"] = io::to_json(m.body.center_of_mass());
+  j["gyrostat"] = io::to_json(m.body.gyrostat());
+  const Mat3& P = m.body.principal_axes();
+  j["principal_axes"] = io::Json::array(
+      {io::to_json(P.col(0)), io::to_json(P.col(1)), io::to_json(P.col(2))});
+  j["g"] = m.field.g;
+  j["lambda"] = m.field.lambda_;
+  return j;
+}
+
+void print_model(std::ostream& os, const Model& m) {
+  os << "body      A, B, C = " << fmt(m.body.inertia()) << "   M = " << fmt(m.body.mass())
+     << "\n          r0 = " << fmt(m.body.center_of_mass()) << "   k = " << fmt(m.body.gyrostat())
+     << "\n";
+  if (!m.body.principal_axes().isIdentity(0.0)) {
+    const Mat3& P = m.body.principal_axes();
+    os << "          principal axes (user frame): x' = " << fmt(Vec3(P.col(0)), 6)
+       << "  y' = " << fmt(Vec3(P.col(1)), 6) << "  z' = " << fmt(Vec3(P.col(2)), 6) << "\n";
+  }
+  os << "field     g = " << fmt(m.field.g) << "   lambda = " << fmt(m.field.lambda_) << "\n";
+}
+
+io::Json simulation_json(const SimulationReport& r) {
+  io::Json j;
+  const Vec3 w = omega(r.scenario.model.body, r.outcome.state);
+  j["scenario"] = r.scenario.source;
+  j["method"] = r.method.name;
+  const MethodInfo& info = method_info(r.method.name);
+  if (info.kind == MethodKind::adaptive) {
+    j["tolerance"] = {{"abs", r.method.abs_tol}, {"rel", r.method.rel_tol}};
+  } else {
+    j["step"] = r.method.step;
+  }
+  j["outcome"] = std::string(to_string(r.outcome.status));
+  j["steps"] = r.outcome.steps;
+  j["rejected_steps"] = r.outcome.rejected;
+  j["final"] = {{"t", r.outcome.t},
+                {"omega", io::to_json(w)},
+                {"gamma", io::to_json(r.outcome.state.gamma)},
+                {"m", io::to_json(r.outcome.state.m)}};
+  j["integrals"] = {{"initial", io::to_json(r.initial)},
+                    {"final", io::to_json(r.final_values)},
+                    {"max_abs_drift", io::to_json(r.max_drift)}};
+  j["conserved"] = conserved_integrals(r.scenario.model);
+  j["model"] = model_json(r.scenario.model);
+  if (r.csv_path) j["csv"] = *r.csv_path;
+  return j;
+}
+
+void print_simulation_summary(std::ostream& os, const SimulationReport& r) {
+  const Outcome& o = r.outcome;
+  os << "newtop simulate " << r.scenario.source << "\n";
+  print_model(os, r.scenario.model);
+  os << "method    " << r.method.name;
+  if (method_info(r.method.name).kind == MethodKind::adaptive) {
+    os << "  tol = " << fmt(r.method.abs_tol, 3);
+  } else {
+    os << "  step = " << fmt(r.method.step);
+  }
+  os << "\noutcome   " << to_string(o.status) << " at t = " << fmt(o.t) << " after " << o.steps
+     << " steps";
+  if (o.rejected) os << " (" << o.rejected << " rejected)";
+  os << "\nfinal     omega = " << fmt(omega(r.scenario.model.body, o.state))
+     << "\n          gamma = " << fmt(o.state.gamma) << "\n";
+  os << "integral          initial                  final                    max |drift|\n";
+  auto row = [&](const char* name, double a, double b, double d) {
+    os << "  " << std::left << std::setw(10) << name << std::setw(25) << fmt(a) << std::setw(25)
+       << fmt(b) << fmt(d, 3) << "\n";
+  };
+  row("energy", r.initial.energy, r.final_values.energy, r.max_drift.energy);
+  row("area", r.initial.area, r.final_values.area, r.max_drift.area);
+  row("geometric", r.initial.geometric, r.final_values.geometric, r.max_drift.geometric);
+  if (r.initial.brun) row("brun", *r.initial.brun, *r.final_values.brun, *r.max_drift.brun);
+  if (r.initial.lagrange) {
+    row("lagrange", *r.initial.lagrange, *r.final_values.lagrange, *r.max_drift.lagrange);
+  }
+  if (r.csv_path) os << "trajectory written to " << *r.csv_path << "\n";
+}
+
+}  // namespace newtop::app

@@ -1,0 +1,31 @@
+#pragma once
+/// \file
+/// Basic vocabulary of newtop: Eigen aliases and the exception for bad input.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <stdexcept>
+#include <string>
+
+namespace newtop {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+
+/// Bad input at an API or file boundary. The message names the field, what was expected and what
+/// was found, e.g. `inertia: triangle inequality A + B >= C fails: 1 + 2 < 4.5`.
+class InputError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+/// Formats a number with enough digits to round-trip (17 significant digits, shortest form).
+std::string format_number(double x);
+
+/// Formats a vector as `[x, y, z]` with format_number.
+std::string format_vector(const Vec3& v);
+
+/// True when every component is finite.
+inline bool all_finite(const Vec3& v) { return v.allFinite(); }
+
+}  // namespace newtop

@@ -1,0 +1,27 @@
+#pragma once
+/// \file
+/// The stepper concepts every integrator satisfies (checked with static_assert in the tests).
+
+#include <concepts>
+
+#include "newtop/model/model.hpp"
+
+namespace newtop {
+
+/// A fixed-step one-step method: `order()` and `step(model, x, h)` advancing x by h in place.
+template <class S, class M>
+concept FixedStepper = requires(S s, const S cs, const M& model, State& x, double h) {
+  { cs.order() } -> std::convertible_to<int>;
+  s.step(model, x, h);
+};
+
+/// An adaptive (error-controlled) method: `try_step(model, x, t, dt)` attempts a step of dt from
+/// (t, x); on success it advances x and t and returns true; on failure it leaves them and returns
+/// false. In both cases dt is replaced by the suggested next step.
+template <class S, class M>
+concept AdaptiveStepper = requires(S s, const S cs, const M& model, State& x, double& t, double& dt) {
+  { cs.order() } -> std::convertible_to<int>;
+  { s.try_step(model, x, t, dt) } -> std::same_as<bool>;
+};
+
+}  // namespace newtop

@@ -1,0 +1,55 @@
+#pragma once
+/// \file
+/// Output writers: files that appear whole or not at all, CSV trajectories, JSON fragments.
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "newtop/model/integrals.hpp"
+
+namespace newtop::io {
+
+using Json = nlohmann::ordered_json;
+
+/// A file written under a temporary name beside its destination and renamed over it by commit();
+/// destroyed without commit() it removes the temporary, so no half-written file is ever left.
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::string path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  std::ostream& stream() { return out_; }
+  /// Flushes, checks for write errors and renames into place; throws InputError on failure.
+  void commit();
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  std::string tmp_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
+/// CSV trajectory: `t,p,q,r,gamma1,gamma2,gamma3,energy,area,geometric[,brun][,lagrange]`,
+/// numbers in shortest round-trip form.
+class CsvTrajectory {
+ public:
+  CsvTrajectory(std::ostream& out, const Model& model);
+  void write(double t, const State& s);
+
+ private:
+  std::ostream& out_;
+  const Model& model_;
+  bool brun_, lagrange_;
+  std::string line_;
+};
+
+/// {"energy": …, "area": …, "geometric": …[, "brun": …][, "lagrange": …]}
+Json to_json(const IntegralValues& v);
+Json to_json(const Vec3& v);
+
+}  // namespace newtop::io

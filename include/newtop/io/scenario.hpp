@@ -1,0 +1,63 @@
+#pragma once
+/// \file
+/// Scenario files (TOML, docs/scenario.md): body, field, initial state, integration and output.
+
+#include <optional>
+#include <string>
+
+#include "newtop/integrate/methods.hpp"
+#include "newtop/model/model.hpp"
+
+namespace newtop::io {
+
+/// [integrate] as written in the file; each entry optional so that the command line can override.
+struct IntegrateSection {
+  std::optional<std::string> method;
+  std::optional<double> step;
+  std::optional<double> tol;
+  std::optional<double> t_end;
+  double t0 = 0.0;
+  std::optional<std::int64_t> max_steps;
+};
+
+/// [output] as written in the file.
+struct OutputSection {
+  std::optional<std::string> file;
+  std::int64_t every = 1;
+};
+
+/// A parsed and validated scenario. Vectors are in the body's principal axes (converted from the
+/// user's frame when the body was given by a full inertia tensor).
+struct Scenario {
+  std::string source;  ///< file name used in messages
+  Model model;
+  State initial;
+  IntegrateSection integrate;
+  OutputSection output;
+};
+
+/// Reads and validates a scenario file. Throws InputError with a one-line message
+/// `FILE:LINE:COL: [section] key: expected …, found …` (or `FILE: …` where no position applies).
+Scenario load_scenario(const std::string& path);
+
+/// Parses scenario text; `source` names it in messages.
+Scenario parse_scenario(const std::string& text, const std::string& source);
+
+/// Command-line overrides of [integrate].
+struct IntegrateOverrides {
+  std::optional<std::string> method;
+  std::optional<double> step;
+  std::optional<double> tol;
+  std::optional<double> t_end;
+};
+
+/// The method to run: `--method` or the file's method if given; otherwise a step selects the
+/// default splitting method and a tolerance the default adaptive one (the command line's step or
+/// tolerance wins over the file's). Tolerance `tol` sets both absolute and relative tolerance.
+/// Throws InputError when neither a step nor a tolerance is available for the chosen method.
+MethodSettings resolve_method(const Scenario& s, const IntegrateOverrides& o);
+
+/// t_end from the command line or the file; throws InputError if neither gives one.
+double resolve_t_end(const Scenario& s, const IntegrateOverrides& o);
+
+}  // namespace newtop::io

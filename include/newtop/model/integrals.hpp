@@ -1,0 +1,71 @@
+#pragma once
+/// \file
+/// First integrals of the Euler–Poisson equations (spec §5).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "newtop/model/model.hpp"
+
+namespace newtop {
+
+/// I1 = ½ ω·Iω + V(γ): the energy, conserved for every field.
+template <Field F>
+double energy(const BasicModel<F>& model, const State& s) {
+  const Vec3 w = omega(model.body, s);
+  return 0.5 * w.dot(model.body.inertia().cwiseProduct(w)) + potential(model, s.gamma);
+}
+
+/// I2 = (Iω + k)·γ = m·γ: the area integral, conserved for every V(γ).
+inline double area(const State& s) { return s.m.dot(s.gamma); }
+template <Field F>
+double area(const BasicModel<F>& /*model*/, const State& s) {
+  return area(s);
+}
+
+/// I3 = γ·γ = 1: the geometric integral (a Casimir).
+inline double geometric(const State& s) { return s.gamma.squaredNorm(); }
+
+/// Brun's integral (spec §5), I4 = |Iω|² − λ ABC γ·I⁻¹γ
+///   = A²p² + B²q² + C²r² − λ(BC γ1² + CA γ2² + AB γ3²); conserved when r0 = 0 and k = 0.
+double brun(const Model& model, const State& s);
+
+/// Lagrange's integral (spec §5), I4 = C r + k3 = m3; conserved when A = B, x0 = y0 = 0 and
+/// k = (0, 0, k3).
+double lagrange(const Model& model, const State& s);
+
+/// Relative tolerance with which the conditions of spec §5 (A = B, x0 = y0 = 0, k1 = k2 = 0, r0 = 0)
+/// are recognised: parameters written in a file to 15 digits and converted to binary must still
+/// count as equal.
+inline constexpr double kConditionTolerance = 1e-12;
+
+/// True when Brun's integral holds for the model: M g r0 = 0 (no linear term) and k = 0.
+bool brun_holds(const Model& model);
+/// True when Lagrange's integral holds: A = B, M g x0 = M g y0 = 0 and k1 = k2 = 0.
+bool lagrange_holds(const Model& model);
+
+/// Names of the integrals conserved by this model, in the order energy, area, geometric, brun,
+/// lagrange.
+std::vector<std::string> conserved_integrals(const Model& model);
+
+/// The value of each integral at a state, where it holds (std::nullopt otherwise).
+struct IntegralValues {
+  double energy = 0.0;
+  double area = 0.0;
+  double geometric = 0.0;
+  std::optional<double> brun;
+  std::optional<double> lagrange;
+};
+
+/// All integrals of spec §5 at s; brun and lagrange filled only where they hold.
+IntegralValues integrals(const Model& model, const State& s);
+
+/// Integrals for any field: energy, area and geometric (the extra integrals need the quadratic
+/// field).
+template <Field F>
+IntegralValues integrals(const BasicModel<F>& model, const State& s) {
+  return {energy(model, s), area(s), geometric(s), std::nullopt, std::nullopt};
+}
+
+}  // namespace newtop

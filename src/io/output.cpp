@@ -1,0 +1,73 @@
+#include "newtop/io/output.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <unistd.h>
+
+namespace newtop::io {
+
+AtomicFile::AtomicFile(std::string path)
+    : path_(std::move(path)), tmp_(path_ + ".partial-" + std::to_string(::getpid())) {
+  out_.open(tmp_, std::ios::binary | std::ios::trunc);
+  if (!out_) throw InputError(path_ + ": cannot open the output file for writing");
+}
+
+AtomicFile::~AtomicFile() {
+  if (!committed_) {
+    out_.close();
+    std::error_code ec;
+    std::filesystem::remove(tmp_, ec);
+  }
+}
+
+void AtomicFile::commit() {
+  out_.flush();
+  const bool ok = static_cast<bool>(out_);
+  out_.close();
+  if (!ok) throw InputError(path_ + ": write failed (disk full or file unwritable)");
+  std::error_code ec;
+  std::filesystem::rename(tmp_, path_, ec);
+  if (ec) throw InputError(path_ + ": cannot move the output into place: " + ec.message());
+  committed_ = true;
+}
+
+CsvTrajectory::CsvTrajectory(std::ostream& out, const Model& model)
+    : out_(out), model_(model), brun_(brun_holds(model)), lagrange_(lagrange_holds(model)) {
+  out_ << "t,p,q,r,gamma1,gamma2,gamma3,energy,area,geometric";
+  if (brun_) out_ << ",brun";
+  if (lagrange_) out_ << ",lagrange";
+  out_ << '\n';
+}
+
+void CsvTrajectory::write(double t, const State& s) {
+  const Vec3 w = omega(model_.body, s);
+  line_.clear();
+  auto add = [&](double x) {
+    if (!line_.empty()) line_ += ',';
+    line_ += format_number(x);
+  };
+  add(t);
+  for (int i = 0; i < 3; ++i) add(w[i]);
+  for (int i = 0; i < 3; ++i) add(s.gamma[i]);
+  add(energy(model_, s));
+  add(area(s));
+  add(geometric(s));
+  if (brun_) add(brun(model_, s));
+  if (lagrange_) add(lagrange(model_, s));
+  line_ += '\n';
+  out_ << line_;
+}
+
+Json to_json(const Vec3& v) { return Json::array({v.x(), v.y(), v.z()}); }
+
+Json to_json(const IntegralValues& v) {
+  Json j;
+  j["energy"] = v.energy;
+  j["area"] = v.area;
+  j["geometric"] = v.geometric;
+  if (v.brun) j["brun"] = *v.brun;
+  if (v.lagrange) j["lagrange"] = *v.lagrange;
+  return j;
+}
+
+}  // namespace newtop::io

@@ -1,0 +1,54 @@
+#include "newtop/model/integrals.hpp"
+
+#include <cmath>
+
+namespace newtop {
+namespace {
+
+bool negligible(double x, double scale) { return std::abs(x) <= kConditionTolerance * scale; }
+
+}  // namespace
+
+double brun(const Model& model, const State& s) {
+  const Vec3& I = model.body.inertia();
+  const Vec3 Iw = s.m - model.body.gyrostat();  // I ω
+  const double ABC = I.prod();
+  return Iw.squaredNorm() - model.field.lambda_ * ABC * s.gamma.dot(s.gamma.cwiseQuotient(I));
+}
+
+double lagrange(const Model& /*model*/, const State& s) { return s.m.z(); }
+
+bool brun_holds(const Model& model) {
+  const Body& b = model.body;
+  const double length = std::sqrt(b.inertia().maxCoeff() / std::max(b.mass(), 1e-300));
+  const bool no_linear =
+      model.field.g == 0.0 || b.mass() == 0.0 || b.center_of_mass().norm() <= kConditionTolerance * length;
+  return no_linear && b.gyrostat().isZero(0.0);
+}
+
+bool lagrange_holds(const Model& model) {
+  const Body& b = model.body;
+  const double length = std::sqrt(b.inertia().maxCoeff() / std::max(b.mass(), 1e-300));
+  const bool symmetric = negligible(b.A() - b.B(), b.A());
+  const bool on_axis = model.field.g == 0.0 || b.mass() == 0.0 ||
+                       (negligible(b.center_of_mass().x(), length) &&
+                        negligible(b.center_of_mass().y(), length));
+  const bool rotor_on_axis = b.gyrostat().x() == 0.0 && b.gyrostat().y() == 0.0;
+  return symmetric && on_axis && rotor_on_axis;
+}
+
+std::vector<std::string> conserved_integrals(const Model& model) {
+  std::vector<std::string> names{"energy", "area", "geometric"};
+  if (brun_holds(model)) names.emplace_back("brun");
+  if (lagrange_holds(model)) names.emplace_back("lagrange");
+  return names;
+}
+
+IntegralValues integrals(const Model& model, const State& s) {
+  IntegralValues v{energy(model, s), area(s), geometric(s), std::nullopt, std::nullopt};
+  if (brun_holds(model)) v.brun = brun(model, s);
+  if (lagrange_holds(model)) v.lagrange = lagrange(model, s);
+  return v;
+}
+
+}  // namespace newtop
