@@ -1,0 +1,154 @@
+// One typed conformance suite over every stepper (a new stepper joins with one line in Steppers):
+// observed order, Casimirs, time symmetry and bounded energy error for the Poisson integrators.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "support/problems.hpp"
+
+namespace newtop {
+namespace {
+
+using test::kEps;
+namespace ode = boost::numeric::odeint;
+
+template <const char* Name, int Order, double H0, double Span = 2.0>
+struct Splitting {
+  static SplittingStepper make() { return SplittingStepper(composition_table(Name)); }
+  static constexpr int order = Order;
+  static constexpr bool poisson = true;  // exact sub-flows: Casimirs, symmetry, bounded energy
+  static constexpr double h0 = H0;       // largest step of the order test (asymptotic regime)
+  static constexpr double T = Span;      // length of the order test
+};
+
+template <class S, int Order, double H0, double Span = 2.0>
+struct RungeKutta {
+  static S make() { return S(); }
+  static constexpr int order = Order;
+  static constexpr bool poisson = false;
+  static constexpr double h0 = H0;
+  static constexpr double T = Span;
+};
+
+constexpr char kS2[] = "splitting2", kS4[] = "splitting4", kS4y[] = "splitting4-yoshida",
+               kS6[] = "splitting6", kS8[] = "splitting8", kS8m[] = "splitting8-mclachlan";
+
+using Steppers = ::testing::Types<
+    Splitting<kS2, 2, 0.02>, Splitting<kS4, 4, 0.1>, Splitting<kS4y, 4, 0.05>,
+    Splitting<kS6, 6, 0.2>, Splitting<kS8, 8, 0.4>, Splitting<kS8m, 8, 0.4>,
+    RungeKutta<Rk4Stepper, 4, 0.05>,
+    RungeKutta<OdeintFixedStepper<ode::runge_kutta_dopri5<OdeState>, 5>, 5, 0.1, 10.0>,
+    RungeKutta<OdeintFixedStepper<ode::runge_kutta_fehlberg78<OdeState>, 8>, 8, 0.5, 10.0>>;
+
+template <class T>
+class Conformance : public ::testing::Test {};
+TYPED_TEST_SUITE(Conformance, Steppers);
+
+TYPED_TEST(Conformance, SatisfiesTheStepperConcept) {
+  static_assert(FixedStepper<decltype(TypeParam::make()), Model>);
+  EXPECT_EQ(TypeParam::make().order(), TypeParam::order);
+}
+
+// Observed order: errors at h, h/2, h/4 against a Fehlberg 7(8) solution at tolerance 1e-15
+// (accurate to ~4e-15). The order is the least-squares slope of log e against log h over the three
+// points, log2(e(h)/e(h/4))/2, which averages out the sign changes of the leading error term that
+// make a single pair jitter; it must be within ±0.2 of the nominal order. The smallest error must
+// stay above 5e-14 (12× the reference's error, biasing the slope by < 0.06).
+constexpr double kOrderSlack = 0.2;
+constexpr double kErrorFloor = 5e-14;
+
+TYPED_TEST(Conformance, ObservedOrder) {
+  const Model m = test::generic_model(Vec3(0.1, -0.2, 0.05));
+  const State x0 = test::generic_state(m);
+  const State ref = test::reference_solution(m, x0, TypeParam::T, 1e-15);
+  std::vector<double> err;
+  for (double h : {TypeParam::h0, TypeParam::h0 / 2, TypeParam::h0 / 4}) {
+    auto s = TypeParam::make();
+    const Outcome o = integrate(s, m, x0, 0.0, TypeParam::T, IntegrateOptions{.step = h});
+    ASSERT_EQ(o.status, Status::finished);
+    err.push_back(test::distance(o.state, ref));
+  }
+  ASSERT_GT(err[2], kErrorFloor) << "h0 too small: errors reach the reference's accuracy";
+  const double p = std::log2(err[0] / err[2]) / 2;
+  EXPECT_NEAR(p, TypeParam::order, kOrderSlack)
+      << "errors " << err[0] << " " << err[1] << " " << err[2];
+}
+
+// Casimirs γ·γ and m·γ: every sub-flow preserves them exactly, so only round-off remains, which
+// compensated summation keeps to a random walk: c·ε·√N with c = 8 covering the per-step rounding
+// of the increments.
+constexpr int kCasimirSteps = 20000;
+
+TYPED_TEST(Conformance, CasimirsToRoundOff) {
+  if (!TypeParam::poisson) GTEST_SKIP() << "not a Poisson integrator";
+  const Model m = test::generic_model(Vec3(0.1, -0.2, 0.05));
+  State x = test::generic_state(m);
+  const double g0 = geometric(x), a0 = area(x);
+  auto s = TypeParam::make();
+  double dg = 0, da = 0;
+  for (int i = 0; i < kCasimirSteps; ++i) {
+    s.step(m, x, 0.05);
+    dg = std::max(dg, std::abs(geometric(x) - g0));
+    da = std::max(da, std::abs(area(x) - a0));
+  }
+  const double bound = 8 * kEps * std::sqrt(double(kCasimirSteps));
+  EXPECT_LT(dg, bound * g0);
+  EXPECT_LT(da, bound * (x.m.norm() + std::abs(a0)));
+}
+
+// Time symmetry: a step of h then −h returns to the start. Each of the s sub-flows rounds once
+// (relative ε on increments of size ~h|x|), so the return error is ~ s·ε·|x|.
+TYPED_TEST(Conformance, SymmetricMethodsReturnOnNegativeStep) {
+  if constexpr (!TypeParam::poisson) {
+    GTEST_SKIP() << "Runge–Kutta methods here are not symmetric";
+  } else {
+    const Model m = test::generic_model(Vec3(0.1, -0.2, 0.05));
+    const State x0 = test::generic_state(m);
+    auto s = TypeParam::make();
+    State x = x0;
+    s.step(m, x, 0.1);
+    ASSERT_GT(test::distance(x, x0), 1e-3);  // it did move
+    s.step(m, x, -0.1);
+    const double scale = std::max(x0.m.norm(), 1.0);
+    EXPECT_LT(test::distance(x, x0), 4.0 * double(s.stages()) * kEps * scale);
+  }
+}
+
+// Bounded energy error without drift: the maximum energy error over the last tenth of a long run
+// is no larger than twice that over the first tenth (a linear drift makes it ~9× larger; the
+// factor 2 allows the quasi-periodic oscillation of the modified energy to reach a new maximum).
+constexpr int kEnergySteps = 50000;
+
+template <class S>
+void energy_error_profile(S s, const Model& m, double h, double& first, double& last) {
+  State x = test::generic_state(m);
+  const double e0 = energy(m, x);
+  first = last = 0;
+  for (int i = 0; i < kEnergySteps; ++i) {
+    s.step(m, x, h);
+    const double de = std::abs(energy(m, x) - e0);
+    if (i < kEnergySteps / 10) first = std::max(first, de);
+    if (i >= kEnergySteps - kEnergySteps / 10) last = std::max(last, de);
+  }
+}
+
+TYPED_TEST(Conformance, EnergyErrorBoundedWithoutDrift) {
+  if (!TypeParam::poisson) GTEST_SKIP() << "not symplectic";
+  const Model m = test::generic_model(Vec3(0.1, -0.2, 0.05));
+  double first, last;
+  energy_error_profile(TypeParam::make(), m, 0.05, first, last);
+  EXPECT_LT(last, 2.0 * first + 64 * kEps) << "first tenth " << first << ", last tenth " << last;
+}
+
+// The same measure must see the drift of a non-symplectic method, or it proves nothing.
+TEST(ConformanceControl, Rk4EnergyDriftIsDetected) {
+  const Model m = test::generic_model(Vec3(0.1, -0.2, 0.05));
+  double first, last;
+  energy_error_profile(Rk4Stepper(), m, 0.05, first, last);
+  EXPECT_GT(last, 2.0 * first);
+}
+
+}  // namespace
+}  // namespace newtop
