@@ -1,0 +1,75 @@
+#pragma once
+/// \file
+/// Homogeneous polyhedron: a closed, consistently and outward oriented triangle mesh with a
+/// density, and its potential in closed form (Werner & Scheeres 1997, "Exterior gravitation of a
+/// polyhedron derived and compared with harmonic and mascon gravitation representations of
+/// asteroid 4769 Castalia", Celest. Mech. Dyn. Astron. 65, 313–344).
+
+#include <array>
+#include <vector>
+
+#include "newtop/core/types.hpp"
+#include "newtop/exact/attraction.hpp"
+
+namespace newtop {
+
+using Triangle = std::array<int, 3>;
+
+/// What to do with a mesh whose faces are not all oriented outwards.
+enum class Orientation {
+  check,     ///< reject a mesh that is not consistently oriented with outward normals
+  reorient,  ///< make the orientation consistent and outward (flip faces as needed)
+};
+
+/// A validated homogeneous polyhedron with the per-face and per-edge data of the closed form.
+/// Immutable; built by make().
+class Polyhedron {
+ public:
+  /// Validates the mesh: indices in range, no degenerate triangle (repeated vertex or zero area),
+  /// closed (every edge shared by exactly two faces), consistently oriented (each shared edge
+  /// traversed once in each direction) and outward (positive signed volume). With
+  /// Orientation::reorient, inconsistent or inward faces are flipped instead of rejected. Vertices
+  /// no face uses are dropped. Throws InputError ("mesh: …") saying exactly what is wrong and
+  /// where.
+  static Polyhedron make(std::vector<Vec3> vertices, std::vector<Triangle> faces, double density,
+                         Orientation orientation = Orientation::check);
+
+  const std::vector<Vec3>& vertices() const { return vertices_; }
+  const std::vector<Triangle>& faces() const { return faces_; }
+  double density() const { return density_; }
+  /// Enclosed volume (positive).
+  double volume() const { return volume_; }
+  /// Number of faces flipped by Orientation::reorient (0 with Orientation::check).
+  int flipped_faces() const { return flipped_; }
+
+  /// Per-edge data of the closed form: end points and the symmetric dyad
+  /// E_e = n_A n_A,eᵀ + n_B n_B,eᵀ (face normals times outward edge normals), stored as
+  /// (xx, yy, zz, xy, xz, yz).
+  struct Edge {
+    int i, j;
+    std::array<double, 6> E;
+  };
+  const std::vector<Edge>& edges() const { return edges_; }
+  /// Unit outward normal of each face.
+  const std::vector<Vec3>& normals() const { return normals_; }
+
+ private:
+  Polyhedron() = default;
+  std::vector<Vec3> vertices_;
+  std::vector<Triangle> faces_;
+  std::vector<Vec3> normals_;
+  std::vector<Edge> edges_;
+  double density_ = 0.0;
+  double volume_ = 0.0;
+  int flipped_ = 0;
+};
+
+/// Φ(x) = σ ∫ dV / |x − ρ| and ∇Φ(x) of the polyhedron in closed form (Werner–Scheeres):
+/// Φ = σ/2 [Σ_e r_e·E_e r_e L_e − Σ_f (n_f·r_f)² ω_f], ∇Φ = σ [−Σ_e E_e r_e L_e + Σ_f n_f (n_f·r_f)
+/// ω_f], r = vertex − x, L_e = ln((a + b + e)/(a + b − e)), ω_f the signed solid angle of face f.
+/// Valid everywhere except on the surface's edges and vertices. The faces and edges are summed in
+/// fixed blocks, each block in order, so the result has the same bits for any number of threads.
+/// threads > 1 evaluates blocks in parallel with OpenMP (where available).
+Attraction attraction(const Polyhedron& p, const Vec3& x, int threads = 1);
+
+}  // namespace newtop
