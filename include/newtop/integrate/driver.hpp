@@ -18,8 +18,10 @@ struct IntegrateOptions {
   double step = 0.0;
   /// Adaptive methods: first trial step (0: |t1 − t0| / 1000).
   double initial_step = 0.0;
-  /// Adaptive methods: a step below min_step_factor · max(|t|, |t1 − t0|) is an underflow.
-  double min_step_factor = 16 * std::numeric_limits<double>::epsilon();
+  /// Adaptive methods: a trial or accepted step below min_step_factor · max(|t|, |t1 − t0|) is an
+  /// underflow: finishing would take over 1e12 steps, or the tolerance is below what round-off
+  /// allows (the error estimate then vanishes at tiny steps and the run would creep on forever).
+  double min_step_factor = 1e-12;
   /// Both: at most this many accepted steps (adaptive: also counts rejected trials).
   std::int64_t max_steps = 1'000'000'000;
 };
@@ -101,6 +103,10 @@ Outcome integrate(S& stepper, const BasicModel<F>& model, State x, double t0, do
     if (!is_finite(trial)) {
       out.status = Status::non_finite;
       out.t = t_trial;
+      return out;
+    }
+    if (std::abs(dt_tried) < opt.min_step_factor * scale) {
+      out.status = Status::step_size_underflow;
       return out;
     }
     x = trial;
