@@ -180,6 +180,26 @@ Sums sums(const MultipoleField& f, const Vec3& x) {
 
 }  // namespace
 
+Attraction multipole_attraction(const MassMoments& M, int order, const Vec3& x) {
+  const int d = order;
+  const std::vector<double> c = inverse_distance_taylor(-x, d);
+  auto C = [&](int i, int j, int k) {
+    return c[(static_cast<std::size_t>(i) * (d + 1) + j) * (d + 1) + k];
+  };
+  Attraction a;
+  Vec3 grad_c = Vec3::Zero();  // ∇ of Σ M_α c_α at −x
+  for (int i = 0; i < order; ++i)
+    for (int j = 0; i + j < order; ++j)
+      for (int k = 0; i + j + k < order; ++k) {
+        const double m = M(i, j, k);
+        a.potential += m * C(i, j, k);
+        grad_c +=
+            m * Vec3((i + 1) * C(i + 1, j, k), (j + 1) * C(i, j + 1, k), (k + 1) * C(i, j, k + 1));
+      }
+  a.gradient = -grad_c;
+  return a;
+}
+
 FieldValues field_values(const MultipoleField& f, const Vec3& gamma) {
   const Vec3 gm = f.axes * gamma;
   const Sums s = sums(f, f.R * gm);

@@ -1,9 +1,12 @@
 #include "newtop/io/scenario.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "mesh_section.hpp"
+#include "newtop/exact/exact_field.hpp"
 #include "toml_reader.hpp"
 
 namespace newtop::io {
@@ -43,7 +46,7 @@ Body read_body(TableReader& r) {
   }
 }
 
-QuadraticField read_field(TableReader& r) {
+QuadraticField read_field(TableReader& r, ExactSettings& exact) {
   const std::string kind = r.optional_string("kind").value_or("");
   auto wrap = [&](auto&& make) {
     try {
@@ -54,7 +57,26 @@ QuadraticField read_field(TableReader& r) {
     }
   };
   QuadraticField f;
-  if (kind == "brun") {
+  if (kind == "exact" || kind == "multipole") {
+    exact.kind = kind == "exact" ? FieldKind::exact : FieldKind::multipole;
+    exact.mu = r.number("mu");
+    exact.R = r.number("R");
+    if (exact.kind == FieldKind::multipole) {
+      const std::int64_t order = r.integer("order");
+      if (order < 1 || order > 30) {
+        r.fail("order", "expected an integer in [1, 30], found " + std::to_string(order));
+      }
+      exact.order = static_cast<int>(order);
+    }
+    if (!exact.mass_model) r.fail("kind", "kind = \"" + kind + "\" needs a [mass_model] section");
+    f = wrap([&] { return QuadraticField::from_mu_R(exact.mu, exact.R); });
+    try {
+      ExactField::make(exact.mass_model, exact.mu, exact.R);
+    } catch (const InputError& e) {
+      const std::string msg = e.what();
+      r.fail(msg.substr(0, msg.find(':')), msg.substr(msg.find(':') + 2));
+    }
+  } else if (kind == "brun") {
     const double N = r.number("N");
     const double d = r.optional_number("plane_offset").value_or(0.0);
     f = wrap([&] { return QuadraticField::brun(N, d); });
@@ -80,10 +102,12 @@ QuadraticField read_field(TableReader& r) {
                  (R ? "R" : (g || lam || mu ? "" : "none of them")));
     }
   } else {
-    r.fail("kind", "expected \"newtonian\", \"coulomb\", \"uniform\" or \"brun\", found \"" + kind +
-                       "\"");
+    r.fail("kind",
+           "expected \"newtonian\", \"coulomb\", \"uniform\", \"brun\", \"exact\" or "
+           "\"multipole\", found \"" +
+               kind + "\"");
   }
-  r.finish({"N", "plane_offset", "g", "lambda", "mu", "R"});
+  r.finish({"N", "plane_offset", "g", "lambda", "mu", "R", "order"});
   return f;
 }
 
@@ -105,6 +129,30 @@ State read_initial(TableReader& r, const Body& body) {
   return state_from_omega(body, P.transpose() * P_omega, P.transpose() * P_gamma);
 }
 
+/// [body], [mass_model] or both (then they must agree; [body] may then hold only a gyrostat).
+Body read_body_or_mass_model(const toml::table* t, const ExactSettings& exact,
+                             const std::string& source) {
+  if (!exact.mass_model) {
+    TableReader r(*t, source, "body");
+    return read_body(r);
+  }
+  if (!t) return body_of(*exact.mass_model);
+  TableReader r(*t, source, "body");
+  const Vec3 k = r.optional_vec3("gyrostat").value_or(Vec3::Zero());
+  const Body derived = body_of(*exact.mass_model, k);
+  if (r.has("inertia") || r.has("inertia_tensor")) {
+    TableReader again(*t, source, "body");
+    check_agreement(again, read_body(again), derived);
+  }
+  r.finish({"mass", "center_of_mass"});
+  if (!r.has("inertia") && !r.has("inertia_tensor") && (r.has("mass") || r.has("center_of_mass"))) {
+    r.fail(r.has("mass") ? "mass" : "center_of_mass",
+           "with [mass_model], give the whole body (inertia, mass, center_of_mass) to cross-check "
+           "it, or only gyrostat");
+  }
+  return derived;
+}
+
 IntegrateSection read_integrate(TableReader& r) {
   IntegrateSection s;
   s.method = r.optional_string("method");
@@ -117,9 +165,11 @@ IntegrateSection read_integrate(TableReader& r) {
     }
   }
   s.step = r.optional_number("step");
-  if (s.step && !(*s.step > 0)) r.fail("step", "expected a number > 0, found " + format_number(*s.step));
+  if (s.step && !(*s.step > 0))
+    r.fail("step", "expected a number > 0, found " + format_number(*s.step));
   s.tol = r.optional_number("tol");
-  if (s.tol && !(*s.tol > 0)) r.fail("tol", "expected a number > 0, found " + format_number(*s.tol));
+  if (s.tol && !(*s.tol > 0))
+    r.fail("tol", "expected a number > 0, found " + format_number(*s.tol));
   s.t_end = r.optional_number("t_end");
   s.t0 = r.optional_number("t0").value_or(0.0);
   s.max_steps = r.optional_integer("max_steps");
@@ -155,12 +205,18 @@ Scenario parse_scenario(const std::string& text, const std::string& source) {
     if (!t && required) top.fail(name, "missing section [" + name + "]");
     return t;
   };
-  TableReader body(*section("body", true), source, "body");
+  ExactSettings exact;
+  if (const toml::table* t = section("mass_model", false)) {
+    TableReader r(*t, source, "mass_model");
+    exact.mass_model = read_mass_model(r, std::filesystem::path(source).parent_path().string());
+  }
+  const Body body_value =
+      read_body_or_mass_model(section("body", !exact.mass_model), exact, source);
   TableReader field(*section("field", true), source, "field");
-  Model model{read_body(body), read_field(field)};
+  Model model{body_value, read_field(field, exact)};
   TableReader initial(*section("initial", true), source, "initial");
   const State x0 = read_initial(initial, model.body);
-  Scenario s{source, model, x0, {}, {}};
+  Scenario s{source, model, x0, {}, {}, exact};
   if (const toml::table* t = section("integrate", false)) {
     TableReader r(*t, source, "integrate");
     s.integrate = read_integrate(r);

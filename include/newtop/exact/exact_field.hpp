@@ -12,6 +12,8 @@
 
 namespace newtop {
 
+class MassMoments;
+
 /// V, ∂V/∂γ (γ a free vector of R³), ∂V/∂R, L = γ × ∂V/∂γ and
 /// F = −(∂V/∂R) γ + (1/R) γ × (γ × ∂V/∂γ) at one γ (spec §2).
 struct FieldValues {
@@ -30,12 +32,22 @@ FieldValues complete(double V, const Vec3& grad_gamma, double dV_dR, const Vec3&
 /// in the body frame). `axes` is the rotation P from the body's principal axes to the frame of
 /// the mass model (Body::principal_axes()): a body-frame γ is Pγ in the model's frame.
 /// `threads` > 1 evaluates a polyhedron in parallel (same bits for any count).
+///
+/// Far from a polyhedron the closed form loses about ε (R/r)² of V to cancellation (sums of terms
+/// of size R·r making one of size r³/R). From R ≥ kFarField·r on (r the body's radius about O),
+/// make() therefore sets up the multipole series to the order whose rigorous truncation bound
+/// (r/R)^p/(1 − r/R) is below ε/2 of V, and the field is evaluated from it: exact to round-off.
 struct ExactField {
   std::shared_ptr<const MassModel> mass_model;
   double mu = 0.0;
   double R = 0.0;
   Mat3 axes = Mat3::Identity();
   int threads = 1;
+  /// Far-field series of a polyhedron (null: closed form) and its order.
+  std::shared_ptr<const MassMoments> far_moments;
+  int far_order = 0;
+
+  static constexpr double kFarField = 16.0;
 
   /// Checks μ > 0, R > 0 (finite) and that the centre lies outside the sphere about O holding the
   /// body (R > max_radius); throws InputError naming mu or R.

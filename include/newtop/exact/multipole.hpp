@@ -39,6 +39,10 @@ class MassMoments {
 /// array indexed (i·(d+1) + j)·(d+1) + k, zero where i + j + k > degree.
 std::vector<double> inverse_distance_taylor(const Vec3& x, int degree);
 
+/// Φ(x) = ∫ dm/|x − ρ| and ∇Φ from the series Σ_{|α| ≤ order−1} M_α c_α(−x) (terms through
+/// |x|^−order); needs moments of degree ≥ order − 1.
+Attraction multipole_attraction(const MassMoments& moments, int order, const Vec3& x);
+
 /// Truncated multipole expansion of order p ≥ 1 (terms through 1/R^p) as a Field. The moments are
 /// computed to degree p so that the first omitted term is available as an error estimate.
 struct MultipoleField {

@@ -2,9 +2,11 @@
 /// \file
 /// Scenario files (TOML, docs/scenario.md): body, field, initial state, integration and output.
 
+#include <memory>
 #include <optional>
 #include <string>
 
+#include "newtop/exact/mass_models.hpp"
 #include "newtop/integrate/methods.hpp"
 #include "newtop/model/model.hpp"
 
@@ -26,6 +28,19 @@ struct OutputSection {
   std::int64_t every = 1;
 };
 
+/// Which field a run uses: the quadratic model of spec §3, the exact field of spec §2, or its
+/// multipole expansion to `order` (terms through 1/R^order).
+enum class FieldKind { quadratic, exact, multipole };
+
+/// [mass_model] and the exact-field settings of [field] (kind = "exact" | "multipole", mu, R,
+/// order). With a mass model the body is derived from it (principal axes as for inertia_tensor).
+struct ExactSettings {
+  std::shared_ptr<const MassModel> mass_model;  ///< null when the file has no [mass_model]
+  FieldKind kind = FieldKind::quadratic;
+  double mu = 0.0, R = 0.0;
+  int order = 0;
+};
+
 /// A parsed and validated scenario. Vectors are in the body's principal axes (converted from the
 /// user's frame when the body was given by a full inertia tensor).
 struct Scenario {
@@ -34,6 +49,7 @@ struct Scenario {
   State initial;
   IntegrateSection integrate;
   OutputSection output;
+  ExactSettings exact;  ///< model.field is the quadratic field of the same μ and R
 };
 
 /// Reads and validates a scenario file. Throws InputError with a one-line message

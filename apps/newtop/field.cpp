@@ -1,0 +1,203 @@
+// newtop field SCENARIO.toml --gamma g1,g2,g3: exact and quadratic field of a mass model at one
+// orientation (spec §2, §3), and with --scan-R the error of the quadratic model against R.
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+#include "command.hpp"
+#include "newtop/exact/multipole.hpp"
+#include "newtop/io/output.hpp"
+#include "newtop/io/scenario.hpp"
+
+namespace newtop::app {
+namespace {
+
+struct FieldArgs {
+  std::string scenario;
+  std::string gamma;
+  std::optional<double> R;
+  std::optional<std::string> scan;
+  bool json = false;
+};
+
+Vec3 parse_gamma(const std::string& text) {
+  std::stringstream ss(text);
+  std::string tok;
+  std::vector<double> v;
+  while (std::getline(ss, tok, ',')) {
+    try {
+      std::size_t used = 0;
+      v.push_back(std::stod(tok, &used));
+      if (used != tok.size()) throw std::invalid_argument(tok);
+    } catch (const std::exception&) {
+      throw InputError("--gamma: expected three numbers g1,g2,g3, found \"" + text + "\"");
+    }
+  }
+  if (v.size() != 3)
+    throw InputError("--gamma: expected three numbers g1,g2,g3, found \"" + text + "\"");
+  const Vec3 g(v[0], v[1], v[2]);
+  if (!g.allFinite() || g.norm() == 0.0) {
+    throw InputError("--gamma: expected a finite non-zero vector, found " + format_vector(g));
+  }
+  return g.normalized();
+}
+
+struct Scan {
+  double R1, R2;
+  int n;
+};
+
+Scan parse_scan(const std::string& text) {
+  Scan s{};
+  char c1 = 0, c2 = 0;
+  std::istringstream is(text);
+  if (!(is >> s.R1 >> c1 >> s.R2 >> c2 >> s.n) || c1 != ':' || c2 != ':' || !is.eof() ||
+      !(s.R1 > 0) || !(s.R2 > s.R1) || s.n < 2) {
+    throw InputError("--scan-R: expected R1:R2:N with 0 < R1 < R2 and N >= 2, found \"" + text +
+                     "\"");
+  }
+  return s;
+}
+
+io::Json values_json(const FieldValues& v) {
+  return {{"potential", v.potential},
+          {"grad_gamma", io::to_json(v.grad_gamma)},
+          {"dV_dR", v.dV_dR},
+          {"moment", io::to_json(v.moment)},
+          {"force", io::to_json(v.force)}};
+}
+
+FieldValues difference(const FieldValues& a, const FieldValues& b) {
+  return {a.potential - b.potential, a.grad_gamma - b.grad_gamma, a.dV_dR - b.dV_dR,
+          a.moment - b.moment, a.force - b.force};
+}
+
+io::Json mass_properties_json(const MassProperties& mp, const Body& body) {
+  io::Json J = io::Json::array();
+  for (int i = 0; i < 3; ++i) J.push_back(io::to_json(Vec3(mp.inertia_tensor.row(i))));
+  const Mat3& P = body.principal_axes();
+  return {{"mass", mp.mass},
+          {"center_of_mass", io::to_json(mp.center_of_mass)},
+          {"inertia_tensor", J},
+          {"principal_moments", io::to_json(body.inertia())},
+          {"principal_axes",
+           io::Json::array({io::to_json(P.col(0)), io::to_json(P.col(1)), io::to_json(P.col(2))})}};
+}
+
+/// Least-squares slope of log y against log x.
+double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double n = static_cast<double>(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double lx = std::log(x[i]), ly = std::log(y[i]);
+    sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly;
+  }
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+void print_values(const char* name, const FieldValues& v) {
+  std::cout << name << "  V = " << format_number(v.potential)
+            << "\n        dV/dgamma = " << format_vector(v.grad_gamma)
+            << "\n        dV/dR = " << format_number(v.dV_dR)
+            << "\n        L = " << format_vector(v.moment)
+            << "\n        F = " << format_vector(v.force) << "\n";
+}
+
+int run(const FieldArgs& a) {
+  const io::Scenario sc = io::load_scenario(a.scenario);
+  const io::ExactSettings& e = sc.exact;
+  if (!e.mass_model)
+    throw InputError(sc.source + ": [mass_model]: missing: newtop field needs a mass model");
+  if (e.kind == io::FieldKind::quadratic && !a.R) {
+    throw InputError(sc.source +
+                     ": [field] kind: expected \"exact\" or \"multipole\" with mu and R, "
+                     "or give --R");
+  }
+  // Without an exact [field] (only --R) the centre has unit mu.
+  const double mu = e.kind == io::FieldKind::quadratic ? 1.0 : e.mu;
+  const double R = a.R.value_or(e.R);
+  const Body& body = sc.model.body;
+  const Mat3& P = body.principal_axes();
+  const Vec3 gamma = P.transpose() * parse_gamma(a.gamma);  // user frame → principal axes
+  auto at = [&](double r) {
+    const FieldValues ex = field_values(ExactField::make(e.mass_model, mu, r, P), gamma);
+    const MultipoleField q = MultipoleField::make(*e.mass_model, 3, mu, r, P);
+    return std::pair{ex, field_values(q, gamma)};
+  };
+  io::Json j;
+  j["scenario"] = sc.source;
+  j["gamma"] = io::to_json(gamma);
+  j["mu"] = mu;
+  j["R"] = R;
+  j["mass_properties"] = mass_properties_json(mass_properties(*e.mass_model), body);
+  const auto [ex, ap] = at(R);
+  j["exact"] = values_json(ex);
+  j["approx"] = values_json(ap);
+  j["difference"] = values_json(difference(ex, ap));
+  const TruncationError t =
+      truncation_error(MultipoleField::make(*e.mass_model, 3, mu, R, P), gamma);
+  j["approx_truncation_error"] = {{"next_term", t.next_term}, {"bound", t.bound}};
+  if (a.scan) {
+    const Scan s = parse_scan(*a.scan);
+    std::vector<double> Rs, dV, dL, rel;
+    for (int i = 0; i < s.n; ++i) {
+      const double r = s.R1 * std::pow(s.R2 / s.R1, static_cast<double>(i) / (s.n - 1));
+      const auto [x, q] = at(r);
+      Rs.push_back(r);
+      dV.push_back(std::abs(x.potential - q.potential));
+      dL.push_back((x.moment - q.moment).norm());
+      rel.push_back(dL.back() / x.moment.norm());
+    }
+    j["scan"] = {{"R", Rs},
+                 {"potential_error", dV},
+                 {"moment_error", dL},
+                 {"moment_relative_error", rel},
+                 {"slope_potential", loglog_slope(Rs, dV)},
+                 {"slope_moment", loglog_slope(Rs, dL)}};
+  }
+  if (a.json) {
+    std::cout << j.dump(2) << '\n';
+    return kExitOk;
+  }
+  std::cout << "newtop field " << sc.source << "\nmu = " << format_number(mu)
+            << "   R = " << format_number(R)
+            << "   gamma (principal axes) = " << format_vector(gamma)
+            << "\nbody  M = " << format_number(body.mass())
+            << "   A, B, C = " << format_vector(body.inertia())
+            << "   r0 = " << format_vector(body.center_of_mass()) << "\n";
+  print_values("exact ", ex);
+  print_values("approx", ap);
+  print_values("diff  ", difference(ex, ap));
+  if (a.scan) {
+    std::cout << "R                        |V - V_q|                |L - L_q|                |L - "
+                 "L_q|/|L|\n";
+    const auto& sj = j["scan"];
+    for (std::size_t i = 0; i < sj["R"].size(); ++i) {
+      std::cout << format_number(sj["R"][i]) << "  " << format_number(sj["potential_error"][i])
+                << "  " << format_number(sj["moment_error"][i]) << "  "
+                << format_number(sj["moment_relative_error"][i]) << "\n";
+    }
+    std::cout << "log-log slope: potential " << format_number(sj["slope_potential"]) << ", moment "
+              << format_number(sj["slope_moment"]) << "\n";
+  }
+  return kExitOk;
+}
+
+const RegisterCommand reg{Command{
+    "field", "Exact and quadratic field of a mass model: V, dV/dgamma, dV/dR, moment, force",
+    [](CLI::App& sub) -> std::function<int()> {
+      auto a = std::make_shared<FieldArgs>();
+      sub.add_option("scenario", a->scenario, "scenario file (TOML) with [mass_model]")->required();
+      sub.add_option("--gamma", a->gamma, "g1,g2,g3: direction from the centre to O (user frame)")
+          ->required();
+      sub.add_option("--R", a->R, "distance of the centre (overrides [field] R)");
+      sub.add_option("--scan-R", a->scan, "R1:R2:N: error of the quadratic model on N distances");
+      sub.add_flag("--json", a->json, "print one JSON object");
+      return [a] { return run(*a); };
+    }}};
+
+}  // namespace
+}  // namespace newtop::app
