@@ -191,7 +191,7 @@ Polyhedron Polyhedron::make(std::vector<Vec3> vertices, std::vector<Triangle> fa
     const Mat3 E0 =
         nA * d.cross(nA).normalized().transpose() + nB * (-d).cross(nB).normalized().transpose();
     const Mat3 E = 0.5 * (E0 + E0.transpose());
-    p.edges_.push_back({i, j, {E(0, 0), E(1, 1), E(2, 2), E(0, 1), E(0, 2), E(1, 2)}});
+    p.edges_.push_back({i, j, d.norm(), {E(0, 0), E(1, 1), E(2, 2), E(0, 1), E(0, 2), E(1, 2)}});
   }
   // A fixed edge order (the hash map's order is unspecified) keeps results reproducible.
   std::sort(p.edges_.begin(), p.edges_.end(),

@@ -17,13 +17,20 @@ struct Partial {
   Vec3 edge_grad = Vec3::Zero(), face_grad = Vec3::Zero();  // Σ E r L, Σ n (n·r) ω
 };
 
-void add_faces(const Polyhedron& p, const Vec3& x, int begin, int end, Partial& s) {
-  const auto& V = p.vertices();
+/// Vertex positions relative to the field point, r = v − x, and their lengths, computed once per
+/// evaluation (each vertex is shared by about six faces and six edges).
+struct Relative {
+  std::vector<Vec3> r;
+  std::vector<double> len;
+};
+
+void add_faces(const Polyhedron& p, const Relative& rel, int begin, int end, Partial& s) {
   const auto& F = p.faces();
   const auto& N = p.normals();
   for (int f = begin; f < end; ++f) {
-    const Vec3 r1 = V[F[f][0]] - x, r2 = V[F[f][1]] - x, r3 = V[F[f][2]] - x;
-    const double l1 = r1.norm(), l2 = r2.norm(), l3 = r3.norm();
+    const auto [i1, i2, i3] = F[f];
+    const Vec3 &r1 = rel.r[i1], &r2 = rel.r[i2], &r3 = rel.r[i3];
+    const double l1 = rel.len[i1], l2 = rel.len[i2], l3 = rel.len[i3];
     const double num = r1.dot(r2.cross(r3));
     const double den = l1 * l2 * l3 + l1 * r2.dot(r3) + l2 * r3.dot(r1) + l3 * r1.dot(r2);
     const double omega = 2.0 * std::atan2(num, den);
@@ -33,15 +40,14 @@ void add_faces(const Polyhedron& p, const Vec3& x, int begin, int end, Partial& 
   }
 }
 
-void add_edges(const Polyhedron& p, const Vec3& x, int begin, int end, Partial& s) {
-  const auto& V = p.vertices();
+void add_edges(const Polyhedron& p, const Relative& rel, int begin, int end, Partial& s) {
   const auto& Ed = p.edges();
   for (int k = begin; k < end; ++k) {
     const auto& e = Ed[k];
-    const Vec3 r1 = V[e.i] - x, r2 = V[e.j] - x;
-    const double a = r1.norm(), b = r2.norm(), len = (V[e.j] - V[e.i]).norm();
+    const Vec3 &r1 = rel.r[e.i], &r2 = rel.r[e.j];
+    const double a = rel.len[e.i], b = rel.len[e.j];
     // a + b − e = 2(ab + r1·r2)/(a + b + e): no cancellation away from the edge itself.
-    const double sum = a + b + len;
+    const double sum = a + b + e.length;
     const double L = std::log(sum * sum / (2.0 * (a * b + r1.dot(r2))));
     const auto& E = e.E;
     const Vec3 Er{E[0] * r1.x() + E[3] * r1.y() + E[4] * r1.z(),
@@ -60,13 +66,23 @@ Attraction attraction(const Polyhedron& p, const Vec3& x, int threads) {
   const int bf = (nf + kBlock - 1) / kBlock, be = (ne + kBlock - 1) / kBlock;
   const int blocks = bf + be;
   std::vector<Partial> part(static_cast<std::size_t>(blocks));
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-  for (int b = 0; b < blocks; ++b) {
-    if (b < bf) {
-      add_faces(p, x, b * kBlock, std::min(nf, (b + 1) * kBlock), part[b]);
-    } else {
-      const int c = b - bf;
-      add_edges(p, x, c * kBlock, std::min(ne, (c + 1) * kBlock), part[b]);
+  const int nv = static_cast<int>(p.vertices().size());
+  Relative rel{std::vector<Vec3>(nv), std::vector<double>(nv)};
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+#pragma omp for schedule(static)
+    for (int v = 0; v < nv; ++v) {
+      rel.r[v] = p.vertices()[v] - x;
+      rel.len[v] = rel.r[v].norm();
+    }
+#pragma omp for schedule(static)
+    for (int b = 0; b < blocks; ++b) {
+      if (b < bf) {
+        add_faces(p, rel, b * kBlock, std::min(nf, (b + 1) * kBlock), part[b]);
+      } else {
+        const int c = b - bf;
+        add_edges(p, rel, c * kBlock, std::min(ne, (c + 1) * kBlock), part[b]);
+      }
     }
   }
   Partial t;

@@ -44,9 +44,10 @@ class Polyhedron {
 
   /// Per-edge data of the closed form: end points and the symmetric dyad
   /// E_e = n_A n_A,eᵀ + n_B n_B,eᵀ (face normals times outward edge normals), stored as
-  /// (xx, yy, zz, xy, xz, yz).
+  /// (xx, yy, zz, xy, xz, yz), and the edge's length.
   struct Edge {
     int i, j;
+    double length;
     std::array<double, 6> E;
   };
   const std::vector<Edge>& edges() const { return edges_; }
