@@ -48,6 +48,8 @@ Body read_body(TableReader& r) {
 
 QuadraticField read_field(TableReader& r, ExactSettings& exact) {
   const std::string kind = r.optional_string("kind").value_or("");
+  // Unknown keys (typos) first: a misspelt "g" must be reported as such, not as a missing g.
+  r.finish({"N", "plane_offset", "g", "lambda", "mu", "R", "order"});
   auto wrap = [&](auto&& make) {
     try {
       return make();
