@@ -25,8 +25,8 @@ io::Json model_json(const Model& m) {
   j["center_of_mass"] = io::to_json(m.body.center_of_mass());
   j["gyrostat"] = io::to_json(m.body.gyrostat());
   const Mat3& P = m.body.principal_axes();
-  j["principal_axes"] = io::Json::array(
-      {io::to_json(P.col(0)), io::to_json(P.col(1)), io::to_json(P.col(2))});
+  j["principal_axes"] =
+      io::Json::array({io::to_json(P.col(0)), io::to_json(P.col(1)), io::to_json(P.col(2))});
   j["g"] = m.field.g;
   j["lambda"] = m.field.lambda_;
   return j;

@@ -36,7 +36,8 @@ const MethodInfo& method_info(std::string_view name) {
 void validate(const MethodSettings& s) {
   const MethodInfo& info = method_info(s.name);
   if (info.kind == MethodKind::adaptive) {
-    if (!(std::isfinite(s.abs_tol) && s.abs_tol > 0) || !(std::isfinite(s.rel_tol) && s.rel_tol > 0)) {
+    if (!(std::isfinite(s.abs_tol) && s.abs_tol > 0) ||
+        !(std::isfinite(s.rel_tol) && s.rel_tol > 0)) {
       throw InputError("tol: expected finite tolerances > 0 for method " + std::string(s.name) +
                        ", found abs " + format_number(s.abs_tol) + ", rel " +
                        format_number(s.rel_tol));

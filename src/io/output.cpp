@@ -1,8 +1,9 @@
 #include "newtop/io/output.hpp"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
-#include <unistd.h>
 
 namespace newtop::io {
 

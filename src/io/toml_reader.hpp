@@ -2,11 +2,12 @@
 // Internal: typed, checked access to one TOML table, with messages that name the file, the
 // position, the section and the key, and a final check for unknown keys (typos).
 
+#include <toml++/toml.h>
+
 #include <cstdint>
 #include <optional>
 #include <set>
 #include <string>
-#include <toml++/toml.h>
 #include <vector>
 
 #include "newtop/core/types.hpp"

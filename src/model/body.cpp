@@ -56,7 +56,8 @@ Body Body::from_principal(const Vec3& inertia, double mass, const Vec3& center_o
 
 Body Body::from_tensor(const Mat3& J, double mass, const Vec3& center_of_mass,
                        const Vec3& gyrostat) {
-  if (!J.allFinite()) throw InputError("inertia_tensor: expected finite numbers, found a NaN or inf");
+  if (!J.allFinite())
+    throw InputError("inertia_tensor: expected finite numbers, found a NaN or inf");
   const double scale = J.cwiseAbs().maxCoeff();
   const double asym = (J - J.transpose()).cwiseAbs().maxCoeff();
   if (asym > 1e-12 * scale) {

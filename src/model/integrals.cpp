@@ -21,8 +21,8 @@ double lagrange(const Model& /*model*/, const State& s) { return s.m.z(); }
 bool brun_holds(const Model& model) {
   const Body& b = model.body;
   const double length = std::sqrt(b.inertia().maxCoeff() / std::max(b.mass(), 1e-300));
-  const bool no_linear =
-      model.field.g == 0.0 || b.mass() == 0.0 || b.center_of_mass().norm() <= kConditionTolerance * length;
+  const bool no_linear = model.field.g == 0.0 || b.mass() == 0.0 ||
+                         b.center_of_mass().norm() <= kConditionTolerance * length;
   return no_linear && b.gyrostat().isZero(0.0);
 }
 
@@ -30,9 +30,9 @@ bool lagrange_holds(const Model& model) {
   const Body& b = model.body;
   const double length = std::sqrt(b.inertia().maxCoeff() / std::max(b.mass(), 1e-300));
   const bool symmetric = negligible(b.A() - b.B(), b.A());
-  const bool on_axis = model.field.g == 0.0 || b.mass() == 0.0 ||
-                       (negligible(b.center_of_mass().x(), length) &&
-                        negligible(b.center_of_mass().y(), length));
+  const bool on_axis =
+      model.field.g == 0.0 || b.mass() == 0.0 ||
+      (negligible(b.center_of_mass().x(), length) && negligible(b.center_of_mass().y(), length));
   const bool rotor_on_axis = b.gyrostat().x() == 0.0 && b.gyrostat().y() == 0.0;
   return symmetric && on_axis && rotor_on_axis;
 }

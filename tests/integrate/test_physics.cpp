@@ -14,7 +14,8 @@ using test::kEps;
 
 // Splitting (order 8, h = 0.01: error ~ 1e-15 per unit time from the order test) and Fehlberg 7(8)
 // at tolerance 1e-14 are independent methods; on a chaotic case over T = 10 their global errors,
-// amplified by the local divergence of nearby orbits, must still agree to 1e-10 (the bound).
+// amplified by the local divergence of nearby orbits, must still agree to 1e-10 (the issue's
+// bound).
 constexpr double kAgreement = 1e-10;
 
 TEST(Agreement, SplittingAndAdaptiveAgreeOnChaoticCase) {
@@ -78,8 +79,9 @@ TEST(BrunIntegral, ConservedOnlyWithoutCentreOfMassOffset) {
   SplittingStepper s(composition_table("splitting6"));
   double drift = 0;
   const double i0 = newtop::brun(brun, x0);
-  integrate(s, brun, x0, 0.0, 50.0, IntegrateOptions{.step = 0.01},
-            [&](double, const State& x) { drift = std::max(drift, std::abs(newtop::brun(brun, x) - i0)); });
+  integrate(s, brun, x0, 0.0, 50.0, IntegrateOptions{.step = 0.01}, [&](double, const State& x) {
+    drift = std::max(drift, std::abs(newtop::brun(brun, x) - i0));
+  });
   // splitting6 at h = 0.01: energy-like errors ~1e-13 of the integral's size O(1).
   EXPECT_LT(drift, 1e-10);
 
@@ -90,8 +92,9 @@ TEST(BrunIntegral, ConservedOnlyWithoutCentreOfMassOffset) {
   ASSERT_EQ(conserved_integrals(off).size(), 3u);
   double change = 0;
   SplittingStepper s2(composition_table("splitting6"));
-  integrate(s2, off, x0, 0.0, 50.0, IntegrateOptions{.step = 0.01},
-            [&](double, const State& x) { change = std::max(change, std::abs(newtop::brun(off, x) - i0)); });
+  integrate(s2, off, x0, 0.0, 50.0, IntegrateOptions{.step = 0.01}, [&](double, const State& x) {
+    change = std::max(change, std::abs(newtop::brun(off, x) - i0));
+  });
   EXPECT_GT(change, 1e-2);
 }
 
@@ -133,8 +136,8 @@ TEST(Outcome, NonFiniteStateStopsAtOnce) {
 TEST(Outcome, StepLimit) {
   const Model m = test::generic_model();
   SplittingStepper s(composition_table("splitting2"));
-  const Outcome o =
-      integrate(s, m, test::generic_state(m), 0.0, 1.0, IntegrateOptions{.step = 0.01, .max_steps = 10});
+  const Outcome o = integrate(s, m, test::generic_state(m), 0.0, 1.0,
+                              IntegrateOptions{.step = 0.01, .max_steps = 10});
   EXPECT_EQ(o.status, Status::step_limit);
   EXPECT_EQ(o.steps, 10);
 }
@@ -151,8 +154,8 @@ TEST(Outcome, AdaptiveUnderflowOnImpossibleTolerance) {
   // A tolerance below the round-off of the state cannot be met: the step shrinks to underflow.
   const Model m = test::generic_model();
   Dopri5Stepper s(1e-30, 1e-30);
-  const Outcome o = integrate(s, m, test::generic_state(m), 0.0, 1.0,
-                              IntegrateOptions{.max_steps = 1'000'000});
+  const Outcome o =
+      integrate(s, m, test::generic_state(m), 0.0, 1.0, IntegrateOptions{.max_steps = 1'000'000});
   EXPECT_EQ(o.status, Status::step_size_underflow);
 }
 

@@ -34,7 +34,8 @@ TEST(Body, RejectsTriangleInequality) {
 }
 
 TEST(Body, AcceptsLimitingRod) {
-  // A thin rod along z about its end: A = B, C = 0 is excluded (C > 0), but a plate A + B = C is fine.
+  // A thin rod along z about its end: A = B, C = 0 is excluded (C > 0), but a plate A + B = C is
+  // fine.
   const Body b = Body::from_principal(Vec3(1, 2, 3), 1, Vec3::Zero());
   EXPECT_EQ(b.C(), 3.0);
 }

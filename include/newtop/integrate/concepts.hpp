@@ -19,7 +19,8 @@ concept FixedStepper = requires(S s, const S cs, const M& model, State& x, doubl
 /// (t, x); on success it advances x and t and returns true; on failure it leaves them and returns
 /// false. In both cases dt is replaced by the suggested next step.
 template <class S, class M>
-concept AdaptiveStepper = requires(S s, const S cs, const M& model, State& x, double& t, double& dt) {
+concept AdaptiveStepper = requires(S s, const S cs, const M& model, State& x, double& t,
+                                   double& dt) {
   { cs.order() } -> std::convertible_to<int>;
   { s.try_step(model, x, t, dt) } -> std::same_as<bool>;
 };

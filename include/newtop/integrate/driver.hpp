@@ -35,9 +35,10 @@ inline bool is_finite(const State& s) { return s.m.allFinite() && s.gamma.allFin
 
 /// Fixed-step driver.
 template <class S, Field F, class Obs = NoObserver>
-  requires FixedStepper<S, BasicModel<F>>
-Outcome integrate(S& stepper, const BasicModel<F>& model, State x, double t0, double t1,
-                  const IntegrateOptions& opt, Obs&& observer = {}) {
+requires FixedStepper<S, BasicModel<F>> Outcome integrate(S& stepper, const BasicModel<F>& model,
+                                                          State x, double t0, double t1,
+                                                          const IntegrateOptions& opt,
+                                                          Obs&& observer = {}) {
   Outcome out{Status::finished, t0, x, 0, 0, 0.0};
   observer(t0, x);
   const double span = t1 - t0;
@@ -68,9 +69,10 @@ Outcome integrate(S& stepper, const BasicModel<F>& model, State x, double t0, do
 
 /// Adaptive driver: the last step is shortened to land exactly on t1.
 template <class S, Field F, class Obs = NoObserver>
-  requires AdaptiveStepper<S, BasicModel<F>>
-Outcome integrate(S& stepper, const BasicModel<F>& model, State x, double t0, double t1,
-                  const IntegrateOptions& opt, Obs&& observer = {}) {
+requires AdaptiveStepper<S, BasicModel<F>> Outcome integrate(S& stepper, const BasicModel<F>& model,
+                                                             State x, double t0, double t1,
+                                                             const IntegrateOptions& opt,
+                                                             Obs&& observer = {}) {
   Outcome out{Status::finished, t0, x, 0, 0, 0.0};
   observer(t0, x);
   const double span = t1 - t0;

@@ -16,10 +16,10 @@
 namespace newtop {
 
 /// How the symmetric base method is built from the sub-flows T_i (rotation about e_i) and K (kick).
-/// kick_outside: K(h/2) T(h) K(h/2); otherwise T(h/2) K(h) T(h/2). The free-body part T(h) is itself
-/// the symmetric (Strang) composition T_i(h/2) T_j(h/2) T_k(h) T_j(h/2) T_i(h/2) with
-/// (i, j, k) = axes. The error constants of the orderings differ by orders of magnitude; the
-/// default was chosen by measurement (docs/performance.md, "Ordering of the free-body split").
+/// kick_outside: K(h/2) T(h) K(h/2); otherwise T(h/2) K(h) T(h/2). The free-body part T(h) is
+/// itself the symmetric (Strang) composition T_i(h/2) T_j(h/2) T_k(h) T_j(h/2) T_i(h/2) with (i, j,
+/// k) = axes. The error constants of the orderings differ by orders of magnitude; the default was
+/// chosen by measurement (docs/performance.md, "Ordering of the free-body split").
 struct SplitOrdering {
   std::array<int, 3> axes{0, 2, 1};
   bool kick_outside = true;
@@ -62,8 +62,9 @@ class SplittingStepper {
 
 namespace detail {
 
-/// Increment of the rotation ẋ = x × (w e_i) over time h: x_j' = c x_j + s x_k, x_k' = −s x_j + c x_k
-/// with (i, j, k) cyclic, c = cos(wh), s = sin(wh); returns x' − x computed without cancellation.
+/// Increment of the rotation ẋ = x × (w e_i) over time h: x_j' = c x_j + s x_k, x_k' = −s x_j + c
+/// x_k with (i, j, k) cyclic, c = cos(wh), s = sin(wh); returns x' − x computed without
+/// cancellation.
 inline void add_rotation_increment(int i, double cm1, double s, const Vec3& x, Vec3& d) {
   const int j = (i + 1) % 3, k = (i + 2) % 3;
   d[j] += cm1 * x[j] + s * x[k];

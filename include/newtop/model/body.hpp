@@ -19,8 +19,8 @@ class Body {
 
   /// Body from a full symmetric inertia tensor J at O given in a user frame. J is diagonalised;
   /// principal_axes() holds the rotation P (columns = principal axes in the user frame, det P = +1)
-  /// and center_of_mass and gyrostat (given in the user frame) are converted by Pᵀ. A tensor that is
-  /// already diagonal keeps the user's axes (P = identity); otherwise the axes are sorted by
+  /// and center_of_mass and gyrostat (given in the user frame) are converted by Pᵀ. A tensor that
+  /// is already diagonal keeps the user's axes (P = identity); otherwise the axes are sorted by
   /// increasing moment.
   static Body from_tensor(const Mat3& inertia_tensor, double mass, const Vec3& center_of_mass,
                           const Vec3& gyrostat = Vec3::Zero());

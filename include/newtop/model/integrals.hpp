@@ -35,8 +35,8 @@ double brun(const Model& model, const State& s);
 /// k = (0, 0, k3).
 double lagrange(const Model& model, const State& s);
 
-/// Relative tolerance with which the conditions of spec §5 (A = B, x0 = y0 = 0, k1 = k2 = 0, r0 = 0)
-/// are recognised: parameters written in a file to 15 digits and converted to binary must still
+/// Relative tolerance with which the conditions of spec §5 (A = B, x0 = y0 = 0, k1 = k2 = 0, r0 =
+/// 0) are recognised: parameters written in a file to 15 digits and converted to binary must still
 /// count as equal.
 inline constexpr double kConditionTolerance = 1e-12;
 

@@ -1,0 +1,151 @@
+// Scenario files: a valid file round-trips into the model; every class of bad input gives one line
+// naming the key, what was expected and what was found.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "newtop/io/scenario.hpp"
+
+namespace newtop::io {
+namespace {
+
+const std::string kValid = R"(
+[body]
+inertia = [1.0, 1.5, 2.2]
+mass = 2.0
+center_of_mass = [0.1, 0.0, 0.3]
+[field]
+g = 1.0
+R = 6.0
+[initial]
+omega = [0.5, 1.1, -0.4]
+gamma = [0.48, -0.6, 0.64]
+[integrate]
+t_end = 10.0
+step = 0.01
+)";
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const auto pos = s.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  return s.replace(pos, from.size(), to);
+}
+
+// Parses text and returns the error message (empty if it parsed).
+std::string error_of(const std::string& text) {
+  try {
+    parse_scenario(text, "s.toml");
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << "message must be one line: " << msg;
+    return msg;
+  }
+  return "";
+}
+
+void expect_error(const std::string& text, std::initializer_list<const char*> parts) {
+  const std::string msg = error_of(text);
+  ASSERT_FALSE(msg.empty()) << "accepted bad input";
+  for (const char* p : parts) EXPECT_NE(msg.find(p), std::string::npos) << msg << " lacks " << p;
+}
+
+IntegrateOverrides with_method(const char* name) {
+  IntegrateOverrides o;
+  o.method = name;
+  return o;
+}
+
+IntegrateOverrides with_tol(double tol) {
+  IntegrateOverrides o;
+  o.tol = tol;
+  return o;
+}
+
+TEST(Scenario, ValidFileBuildsTheModel) {
+  const Scenario s = parse_scenario(kValid, "s.toml");
+  EXPECT_EQ(s.model.body.inertia(), Vec3(1.0, 1.5, 2.2));
+  EXPECT_DOUBLE_EQ(s.model.field.lambda_, 0.5);
+  EXPECT_EQ(omega(s.model.body, s.initial), Vec3(0.5, 1.1, -0.4));
+  EXPECT_EQ(*s.integrate.t_end, 10.0);
+  const MethodSettings m = resolve_method(s, {});
+  EXPECT_EQ(m.name, kDefaultFixedMethod);
+  EXPECT_EQ(m.step, 0.01);
+  EXPECT_EQ(resolve_method(s, with_tol(1e-9)).name, kDefaultAdaptiveMethod);
+  EXPECT_EQ(resolve_method(s, with_method("rk4")).step, 0.01);
+  EXPECT_THROW(resolve_method(s, with_method("dopri5")), InputError);  // no tolerance anywhere
+}
+
+TEST(Scenario, UnknownKeyIsNamedWithItsPosition) {
+  expect_error(replace(kValid, "mass = 2.0", "mas = 2.0"),
+               {"s.toml:4:", "[body] mas", "unknown key"});
+  expect_error(kValid + "[outptu]\nfile = \"x.csv\"\n", {"outptu", "unknown key"});
+}
+
+TEST(Scenario, WrongTypeAndLength) {
+  expect_error(replace(kValid, "mass = 2.0", "mass = \"heavy\""),
+               {"[body] mass", "expected a number", "found the string \"heavy\""});
+  expect_error(replace(kValid, "inertia = [1.0, 1.5, 2.2]", "inertia = [1.0, 1.5]"),
+               {"[body] inertia", "expected an array of 3 numbers", "found an array of 2"});
+  expect_error(replace(kValid, "omega = [0.5, 1.1, -0.4]", "omega = [0.5, true, -0.4]"),
+               {"[initial] omega", "element 2"});
+}
+
+TEST(Scenario, NonPhysicalInertia) {
+  expect_error(replace(kValid, "inertia = [1.0, 1.5, 2.2]", "inertia = [1.0, 2.0, 4.5]"),
+               {"[body] inertia", "A + B >= C fails: 1 + 2 < 4.5"});
+  expect_error(replace(kValid, "inertia = [1.0, 1.5, 2.2]", "inertia = [1.0, -1.5, 2.2]"),
+               {"[body] inertia", "positive", "B = -1.5"});
+}
+
+TEST(Scenario, NonFiniteNumbers) {
+  expect_error(replace(kValid, "g = 1.0", "g = nan"), {"[field] g", "finite", "nan"});
+  expect_error(replace(kValid, "gamma = [0.48, -0.6, 0.64]", "gamma = [inf, 0.0, 0.0]"),
+               {"[initial] gamma", "finite"});
+}
+
+TEST(Scenario, GammaMustBeUnitUnlessNormalized) {
+  const std::string off = replace(kValid, "gamma = [0.48, -0.6, 0.64]", "gamma = [0.6, 0.8, 0.01]");
+  expect_error(off, {"[initial] gamma", "unit vector", "normalize = true"});
+  const Scenario s =
+      parse_scenario(replace(off, "[initial]", "[initial]\nnormalize = true"), "s.toml");
+  EXPECT_NEAR(s.initial.gamma.norm(), 1.0, 1e-15);
+}
+
+TEST(Scenario, MalformedTomlAndMissingSections) {
+  expect_error("[body\ninertia = [1, 1, 1]\n", {"s.toml:1:", "malformed TOML"});
+  expect_error(replace(kValid, "[initial]", "[initial_state]"), {"initial", "missing"});
+  expect_error(replace(kValid, "R = 6.0", "lambda = 0.5\nR = 6.0"), {"[field]", "exactly one of"});
+}
+
+TEST(Scenario, UnreadableFile) {
+  try {
+    load_scenario("/nonexistent/dir/none.toml");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/dir/none.toml: cannot read"),
+              std::string::npos);
+  }
+}
+
+TEST(Scenario, UnknownMethod) {
+  expect_error(replace(kValid, "step = 0.01", "step = 0.01\nmethod = \"euler\""),
+               {"[integrate] method", "euler", "splitting6"});
+}
+
+TEST(Scenario, FullTensorRotatesTheInitialVectors) {
+  // A tensor diagonal up to a swap of x and y needs no rotation but must keep the moments.
+  const std::string t =
+      replace(kValid, "inertia = [1.0, 1.5, 2.2]",
+              "inertia_tensor = [[1.25, 0.25, 0.0], [0.25, 1.25, 0.0], [0.0, 0.0, 2.2]]");
+  const Scenario s = parse_scenario(t, "s.toml");
+  EXPECT_NEAR(s.model.body.A(), 1.0, 1e-14);
+  EXPECT_NEAR(s.model.body.B(), 1.5, 1e-14);
+  // ω in the body frame is Pᵀ ω_user: its norm and its product with γ are frame-invariant.
+  EXPECT_NEAR(omega(s.model.body, s.initial).norm(), Vec3(0.5, 1.1, -0.4).norm(), 1e-14);
+  EXPECT_NEAR(omega(s.model.body, s.initial).dot(s.initial.gamma),
+              Vec3(0.5, 1.1, -0.4).dot(Vec3(0.48, -0.6, 0.64)), 1e-14);
+}
+
+}  // namespace
+}  // namespace newtop::io
