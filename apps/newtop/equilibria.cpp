@@ -1,0 +1,107 @@
+// newtop equilibria SCENARIO.toml: every equilibrium of the body at rest (spec §7), its type and
+// the count rule.
+
+#include "newtop/analysis/equilibria.hpp"
+
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+#include "command.hpp"
+#include "newtop/io/output.hpp"
+#include "newtop/io/scenario.hpp"
+#include "summary.hpp"
+
+namespace newtop::app {
+namespace {
+
+struct EquilibriaArgs {
+  std::string scenario;
+  bool json = false;
+};
+
+io::Json equilibria_json(const EquilibriumSet& set) {
+  io::Json list = io::Json::array();
+  for (const auto& e : set.equilibria) {
+    io::Json j;
+    j["gamma"] = io::to_json(e.gamma);
+    j["kappa"] = e.kappa;
+    j["potential"] = e.potential;
+    j["type"] = to_string(e.type);
+    j["hessian_eigenvalues"] = {e.hessian[0], e.hessian[1]};
+    j["staude_generator"] = io::to_json(e.gamma);
+    j["staude_residual"] = e.staude_residual;
+    list.push_back(j);
+  }
+  io::Json circles = io::Json::array();
+  for (const auto& c : set.circles) {
+    circles.push_back({{"axis", std::string(1, "xyz"[c.axis])},
+                       {"gamma_axis", c.gamma_axis},
+                       {"kappa", c.kappa},
+                       {"potential", c.potential}});
+  }
+  io::Json j;
+  j["equilibria"] = list;
+  j["count"] = set.equilibria.size();
+  j["every_orientation"] = set.every_orientation;
+  j["circles"] = circles;
+  j["minima"] = set.minima;
+  j["saddles"] = set.saddles;
+  j["maxima"] = set.maxima;
+  j["degenerate"] = set.degenerate;
+  j["count_rule"] = {{"minima_minus_saddles_plus_maxima", set.euler_characteristic()},
+                     {"holds", set.count_rule_holds()}};
+  return j;
+}
+
+void print_equilibria(std::ostream& os, const EquilibriumSet& set) {
+  if (set.every_orientation) {
+    os << "V is constant on the sphere: every orientation is an equilibrium\n";
+    return;
+  }
+  os << set.equilibria.size() << " isolated equilibria (omega = 0)\n";
+  os << "  type        gamma                                                        kappa"
+        "                   V\n";
+  for (const auto& e : set.equilibria) {
+    os << "  " << std::left << std::setw(10) << to_string(e.type) << "  " << std::setw(60)
+       << format_vector(e.gamma) << " " << std::setw(23) << format_number(e.kappa) << " "
+       << format_number(e.potential) << "\n";
+  }
+  for (const auto& c : set.circles) {
+    os << "  circle of equilibria: gamma_"
+       << "xyz"[c.axis] << " = " << format_number(c.gamma_axis)
+       << ", kappa = " << format_number(c.kappa) << ", V = " << format_number(c.potential) << "\n";
+  }
+  os << "count rule: minima - saddles + maxima = " << set.minima << " - " << set.saddles << " + "
+     << set.maxima << " = " << set.euler_characteristic()
+     << (set.count_rule_holds() ? " (holds)" : " (does not apply: degenerate points or families)")
+     << "\n";
+  os << "each gamma is the generator of the Staude cone gamma.(I gamma x r0) = 0 through it\n";
+}
+
+int run(const EquilibriaArgs& a) {
+  const io::Scenario sc = io::load_scenario(a.scenario);
+  const EquilibriumSet set = find_equilibria(sc.model);
+  if (a.json) {
+    io::Json j = equilibria_json(set);
+    j["model"] = model_json(sc.model);
+    std::cout << j.dump(2) << '\n';
+    return kExitOk;
+  }
+  std::cout << "newtop equilibria " << sc.source << "\n";
+  print_model(std::cout, sc.model);
+  print_equilibria(std::cout, set);
+  return kExitOk;
+}
+
+const RegisterCommand reg{
+    Command{"equilibria", "Every equilibrium at rest (omega = 0), its type and the count rule",
+            [](CLI::App& sub) -> std::function<int()> {
+              auto a = std::make_shared<EquilibriaArgs>();
+              sub.add_option("scenario", a->scenario, "scenario file (TOML)")->required();
+              sub.add_flag("--json", a->json, "print one JSON object");
+              return [a] { return run(*a); };
+            }}};
+
+}  // namespace
+}  // namespace newtop::app
