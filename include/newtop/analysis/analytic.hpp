@@ -1,0 +1,35 @@
+#pragma once
+/// \file
+/// Which integrable case applies to a model and initial state, and its closed-form or quadrature
+/// solution behind one interface (spec §5, §6, §10).
+
+#include <string>
+#include <variant>
+
+#include "newtop/analysis/euler_poinsot.hpp"
+#include "newtop/analysis/lagrange_case.hpp"
+#include "newtop/analysis/pendulum.hpp"
+
+namespace newtop {
+
+enum class AnalyticKind { euler_poinsot, pendulum, lagrange, brun, none };
+std::string to_string(AnalyticKind k);
+
+struct AnalyticDetection {
+  AnalyticKind kind = AnalyticKind::none;
+  std::string reason;  ///< why this case applies, or why none does
+};
+
+/// The first case that applies, in the order Euler–Poinsot, plane pendulum, Lagrange, Brun.
+AnalyticDetection detect_analytic_case(const Model& model, const State& x0);
+
+using AnalyticSolution = std::variant<EulerPoinsot, Pendulum, LagrangeCase>;
+
+/// The solution of a solved case (euler_poinsot, pendulum, lagrange); throws InputError for brun
+/// or none.
+AnalyticSolution analytic_solution(const Model& model, const State& x0, AnalyticKind kind);
+
+/// The state at time t.
+State analytic_state(const AnalyticSolution& s, double t);
+
+}  // namespace newtop
