@@ -147,5 +147,22 @@ TEST(StabilityCli, BadInputIsOneLineAndExitCodeTwo) {
   EXPECT_NE(r.out.find("not along the axis"), std::string::npos) << r.out;
 }
 
+TEST(StabilityCli, UniformGravityAndRotorCases) {
+  // Uniform gravity with r0 = 0: every orientation; a rotor (k ≠ 0) is outside spec §8.
+  const fs::path toml = temp_file("rotor.toml");
+  std::ofstream(toml) << "[body]\ninertia = [1.0, 1.5, 2.0]\ngyrostat = [0.0, 0.0, 0.3]\n"
+                         "[field]\nkind = \"uniform\"\ng = 9.81\n"
+                         "[initial]\nomega = [0.0, 0.0, 0.0]\ngamma = [0.0, 0.0, 1.0]\n";
+  Result r = newtop("equilibria " + toml.string() + " --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = io::Json::parse(r.out);
+  EXPECT_TRUE(j["every_orientation"].get<bool>());
+  EXPECT_EQ(j["count"].get<int>(), 0);
+  r = newtop("rotations " + toml.string());
+  fs::remove(toml);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("gyrostat: permanent rotations"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace newtop
