@@ -183,8 +183,8 @@ IntegralSearch search(const VectorField& field, const std::vector<Candidate>& ba
   const Eigen::VectorXd sv = svd.singularValues() / svd.singularValues()(0);
   s.singular_values.assign(sv.data(), sv.data() + sv.size());
   s.rank = static_cast<int>((sv.array() > opt.threshold).count());
-  s.gap = s.rank < n ? sv(s.rank - 1) / std::max(sv(s.rank), 1e-300)
-                     : std::numeric_limits<double>::infinity();
+  s.gap = s.rank < n && s.rank > 0 && sv(s.rank) > 0 ? sv(s.rank - 1) / sv(s.rank)
+                                                     : std::numeric_limits<double>::infinity();
   const Eigen::MatrixXd null = svd.matrixV().rightCols(n - s.rank);  // scaled coordinates
 
   // Recognise known integrals: fitted, scaled, accepted when in the null space and new.
