@@ -5,6 +5,15 @@
 
 #include "newtop/exact/polyhedron.hpp"
 
+// Vector variants of atan2 and log in glibc's libmvec (x86-64, glibc ≥ 2.35): declared here so that
+// the `omp simd` loops below call them (glibc's own headers declare them only under -ffast-math).
+extern "C" {
+#pragma omp declare simd notinbranch
+double atan2(double, double) noexcept;
+#pragma omp declare simd notinbranch
+double log(double) noexcept;
+}
+
 namespace newtop {
 namespace {
 
@@ -24,37 +33,59 @@ struct Relative {
   std::vector<double> len;
 };
 
-void add_faces(const Polyhedron& p, const Relative& rel, int begin, int end, Partial& s) {
+// The solid angles and edge factors are computed in three passes per block: geometry into small
+// arrays, then atan2 / log over the arrays in `omp simd` loops, which GCC maps to glibc's vector
+// math (libmvec, ≤ 4 ulp), then the sums. The transcendental functions dominate the cost; the
+// AVX2 clone runs them four at a time where the processor has it (docs/performance.md).
+#define NEWTOP_KERNEL __attribute__((target_clones("avx512f", "avx2", "default")))
+
+NEWTOP_KERNEL void add_faces(const Polyhedron& p, const Relative& rel, int begin, int end,
+                             Partial& s) {
   const auto& F = p.faces();
   const auto& N = p.normals();
-  for (int f = begin; f < end; ++f) {
+  double num[kBlock], den[kBlock], nr[kBlock], omega[kBlock];
+  const int n = end - begin;
+  for (int q = 0; q < n; ++q) {
+    const int f = begin + q;
     const auto [i1, i2, i3] = F[f];
     const Vec3 &r1 = rel.r[i1], &r2 = rel.r[i2], &r3 = rel.r[i3];
     const double l1 = rel.len[i1], l2 = rel.len[i2], l3 = rel.len[i3];
-    const double num = r1.dot(r2.cross(r3));
-    const double den = l1 * l2 * l3 + l1 * r2.dot(r3) + l2 * r3.dot(r1) + l3 * r1.dot(r2);
-    const double omega = 2.0 * std::atan2(num, den);
-    const double nr = N[f].dot(r1);
-    s.face_sum += nr * nr * omega;
-    s.face_grad += (nr * omega) * N[f];
+    num[q] = r1.dot(r2.cross(r3));
+    den[q] = l1 * l2 * l3 + l1 * r2.dot(r3) + l2 * r3.dot(r1) + l3 * r1.dot(r2);
+    nr[q] = N[f].dot(r1);
+  }
+#pragma omp simd
+  for (int q = 0; q < n; ++q) omega[q] = 2.0 * atan2(num[q], den[q]);
+  for (int q = 0; q < n; ++q) {
+    s.face_sum += nr[q] * nr[q] * omega[q];
+    s.face_grad += (nr[q] * omega[q]) * N[begin + q];
   }
 }
 
-void add_edges(const Polyhedron& p, const Relative& rel, int begin, int end, Partial& s) {
+NEWTOP_KERNEL void add_edges(const Polyhedron& p, const Relative& rel, int begin, int end,
+                             Partial& s) {
   const auto& Ed = p.edges();
-  for (int k = begin; k < end; ++k) {
-    const auto& e = Ed[k];
+  double arg[kBlock], L[kBlock];
+  const int n = end - begin;
+  for (int q = 0; q < n; ++q) {
+    const auto& e = Ed[begin + q];
     const Vec3 &r1 = rel.r[e.i], &r2 = rel.r[e.j];
     const double a = rel.len[e.i], b = rel.len[e.j];
     // a + b − e = 2(ab + r1·r2)/(a + b + e): no cancellation away from the edge itself.
     const double sum = a + b + e.length;
-    const double L = std::log(sum * sum / (2.0 * (a * b + r1.dot(r2))));
+    arg[q] = sum * sum / (2.0 * (a * b + r1.dot(r2)));
+  }
+#pragma omp simd
+  for (int q = 0; q < n; ++q) L[q] = log(arg[q]);
+  for (int q = 0; q < n; ++q) {
+    const auto& e = Ed[begin + q];
+    const Vec3& r1 = rel.r[e.i];
     const auto& E = e.E;
     const Vec3 Er{E[0] * r1.x() + E[3] * r1.y() + E[4] * r1.z(),
                   E[3] * r1.x() + E[1] * r1.y() + E[5] * r1.z(),
                   E[4] * r1.x() + E[5] * r1.y() + E[2] * r1.z()};
-    s.edge_sum += r1.dot(Er) * L;
-    s.edge_grad += L * Er;
+    s.edge_sum += r1.dot(Er) * L[q];
+    s.edge_grad += L[q] * Er;
   }
 }
 
