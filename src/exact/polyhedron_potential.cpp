@@ -7,12 +7,17 @@
 
 // Vector variants of atan2 and log in glibc's libmvec (x86-64, glibc ≥ 2.35): declared here so that
 // the `omp simd` loops below call them (glibc's own headers declare them only under -ffast-math).
+#if defined(__x86_64__) && defined(__GLIBC__) && !defined(__clang__)
+#define NEWTOP_KERNEL __attribute__((target_clones("avx512f", "avx2", "default")))
 extern "C" {
 #pragma omp declare simd notinbranch
 double atan2(double, double) noexcept;
 #pragma omp declare simd notinbranch
 double log(double) noexcept;
 }
+#else
+#define NEWTOP_KERNEL
+#endif
 
 namespace newtop {
 namespace {
@@ -37,8 +42,6 @@ struct Relative {
 // arrays, then atan2 / log over the arrays in `omp simd` loops, which GCC maps to glibc's vector
 // math (libmvec, ≤ 4 ulp), then the sums. The transcendental functions dominate the cost; the
 // AVX2 clone runs them four at a time where the processor has it (docs/performance.md).
-#define NEWTOP_KERNEL __attribute__((target_clones("avx512f", "avx2", "default")))
-
 NEWTOP_KERNEL void add_faces(const Polyhedron& p, const Relative& rel, int begin, int end,
                              Partial& s) {
   const auto& F = p.faces();
