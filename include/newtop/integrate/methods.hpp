@@ -2,6 +2,7 @@
 /// \file
 /// Methods by name, for scenario files and the command line, and one call that runs any of them.
 
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -38,7 +39,8 @@ struct MethodSettings {
   double step = 0.0;
   double abs_tol = 1e-12;
   double rel_tol = 1e-12;
-  SplitOrdering ordering{};
+  /// Splitting methods: the ordering of the split; default_ordering(table) when absent.
+  std::optional<SplitOrdering> ordering;
 };
 
 /// Checks the settings (known name, a step > 0 for fixed-step methods, tolerances > 0 for adaptive
@@ -54,7 +56,8 @@ Outcome run_method(const MethodSettings& settings, const BasicModel<F>& model, c
   options.step = settings.step;
   switch (info.kind) {
     case MethodKind::splitting: {
-      SplittingStepper s(composition_table(settings.name), settings.ordering);
+      const CompositionTable& table = composition_table(settings.name);
+      SplittingStepper s(table, settings.ordering.value_or(default_ordering(table)));
       return integrate(s, model, x, t0, t1, options, observer);
     }
     case MethodKind::fixed_rk: {
