@@ -1,10 +1,24 @@
 #pragma once
 /// \file
-/// Umbrella header: the whole library.
+/// Umbrella header: the whole library (io/ excluded: link newtop::io and include its headers).
 
+#include "newtop/analysis/analytic.hpp"
+#include "newtop/analysis/equilibria.hpp"
+#include "newtop/analysis/euler_poinsot.hpp"
+#include "newtop/analysis/find_integrals.hpp"
+#include "newtop/analysis/lagrange_case.hpp"
+#include "newtop/analysis/pendulum.hpp"
+#include "newtop/analysis/rotations.hpp"
+#include "newtop/analysis/stability.hpp"
+#include "newtop/analysis/stability_spin.hpp"
 #include "newtop/core/types.hpp"
+#include "newtop/exact/exact_field.hpp"
+#include "newtop/exact/mass_models.hpp"
+#include "newtop/exact/multipole.hpp"
+#include "newtop/exact/polyhedron.hpp"
 #include "newtop/integrate/concepts.hpp"
 #include "newtop/integrate/driver.hpp"
+#include "newtop/integrate/free_body_flow.hpp"
 #include "newtop/integrate/methods.hpp"
 #include "newtop/model/body.hpp"
 #include "newtop/model/field.hpp"
