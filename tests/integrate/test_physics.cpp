@@ -161,3 +161,31 @@ TEST(Outcome, AdaptiveUnderflowOnImpossibleTolerance) {
 
 }  // namespace
 }  // namespace newtop
+
+namespace newtop {
+namespace {
+
+// Dense output of Dormand–Prince: the continuous extension is of order 4, so at tolerance 1e-10
+// its interpolation error inside a step is of the order of the step's error estimate, ~1e-10 per
+// unit state; 1e-8 leaves a margin of 100 and still fails if calc_state returned the step's
+// endpoint (off by ~h·|f| ~ 1e-2).
+constexpr double kDenseAgreement = 1e-8;
+
+TEST(DenseOutput, Dopri5InterpolatesInsideSteps) {
+  const Model m = test::generic_model(Vec3(0.1, -0.2, 0.05));
+  const State x0 = test::generic_state(m);
+  Dopri5Dense<QuadraticField> dense(m, 1e-10, 1e-10);
+  dense.initialize(x0, 0.0, 0.01);
+  int checked = 0;
+  while (dense.current_time() < 3.0) {
+    const auto [t_old, t_new] = dense.do_step();
+    const double t_mid = 0.5 * (t_old + t_new);
+    const State ref = test::reference_solution(m, x0, t_mid, 1e-14);
+    EXPECT_LT(test::distance(dense.calc_state(t_mid), ref), kDenseAgreement) << "t = " << t_mid;
+    ++checked;
+  }
+  EXPECT_GT(checked, 5);
+}
+
+}  // namespace
+}  // namespace newtop
