@@ -2,7 +2,6 @@
 // output files.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -10,36 +9,22 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
+
+#include "support/cli.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CliResult {
-  int code;
-  std::string out, err;
-};
+using newtop::test::CliResult;
 
+// Standard error is kept apart: the tests count its lines and parse standard output as JSON.
 CliResult run(const std::string& args) {
-  const fs::path dir = fs::temp_directory_path() / ("newtop_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const std::string out = (dir / "stdout").string(), err = (dir / "stderr").string();
-  const std::string cmd = std::string(NEWTOP_EXE) + " " + args + " >" + out + " 2>" + err;
-  const int status = std::system(cmd.c_str());
-  auto slurp = [](const std::string& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  };
-  return {WEXITSTATUS(status), slurp(out), slurp(err)};
+  return newtop::test::run_newtop(args, newtop::test::Stderr::separate);
 }
 
-std::string example(const char* name) {
-  return std::string(NEWTOP_SOURCE_DIR) + "/examples/" + name;
-}
+std::string example(const char* name) { return newtop::test::example_path(name); }
 
 fs::path scratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("newtop_cli_" + std::to_string(::getpid()));

@@ -2,32 +2,19 @@
 
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "newtop/exact/exact_field.hpp"
 #include "newtop/io/scenario.hpp"
+#include "support/cli.hpp"
 
 namespace newtop {
 namespace {
 
-struct CliResult {
-  int code;
-  std::string out;
-};
-
-CliResult run(const std::string& args) {
-  const std::string cmd = std::string(NEWTOP_EXE) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), p)) out += buf.data();
-  const int status = pclose(p);
-  return {WEXITSTATUS(status), out};
-}
+using test::CliResult;
+using test::run_newtop;
 
 std::string write(const std::string& name, const std::string& text) {
   const std::string path = ::testing::TempDir() + name;
@@ -58,7 +45,7 @@ step = 0.01
 
 TEST(FieldCli, JsonHasExactApproxAndDifference) {
   const std::string f = write("box.toml", kBox);
-  const CliResult r = run("field " + f + " --gamma 0,0.6,0.8 --json");
+  const CliResult r = run_newtop("field " + f + " --gamma 0,0.6,0.8 --json");
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j["mass_properties"]["mass"].get<double>(), 12.0, 1e-12);
@@ -75,7 +62,7 @@ TEST(FieldCli, JsonHasExactApproxAndDifference) {
 
 TEST(FieldCli, ScanGivesMinusFourSlopeForTheMoment) {
   const std::string f = write("box2.toml", kBox);
-  const CliResult r = run("field " + f + " --gamma 0,0.6,0.8 --scan-R 40:320:4 --json");
+  const CliResult r = run_newtop("field " + f + " --gamma 0,0.6,0.8 --scan-R 40:320:4 --json");
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   // Offset box: nonzero octupole; the next order bends the slope by ~ r/R ≤ 0.1 at R = 40 only.
@@ -84,12 +71,12 @@ TEST(FieldCli, ScanGivesMinusFourSlopeForTheMoment) {
 
 TEST(FieldCli, BadInputIsOneLineWithExitCode2) {
   const std::string f = write("box3.toml", kBox);
-  const CliResult r = run("field " + f + " --gamma 0,0,0");
+  const CliResult r = run_newtop("field " + f + " --gamma 0,0,0");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.out.find("--gamma"), std::string::npos);
   std::string bad = kBox;
   bad.replace(bad.find("R = 12.0"), 8, "R = 1.0");
-  const CliResult inside = run("field " + write("box4.toml", bad) + " --gamma 0,0.6,0.8");
+  const CliResult inside = run_newtop("field " + write("box4.toml", bad) + " --gamma 0,0.6,0.8");
   EXPECT_EQ(inside.code, 2);
   EXPECT_NE(inside.out.find("[field] R: expected a distance greater than"), std::string::npos)
       << inside.out;
@@ -115,7 +102,7 @@ TEST(ScenarioMassModel, BodyMustAgreeWithMassModel) {
 
 TEST(SimulateCli, ExactFieldRunReportsQuadraticComparison) {
   const std::string f = write("box5.toml", kBox);
-  const CliResult r = run("simulate " + f + " --json");
+  const CliResult r = run_newtop("simulate " + f + " --json");
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["field"]["kind"], "exact");

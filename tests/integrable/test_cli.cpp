@@ -4,31 +4,18 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "support/cli.hpp"
+
 namespace {
 
-struct Result {
-  int code;
-  std::string out;
-};
+using newtop::test::CliResult;
+using newtop::test::run_newtop;
 
-Result run(const std::string& args) {
-  const std::string cmd = std::string(NEWTOP_EXE) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  char buf[4096];
-  while (std::size_t n = fread(buf, 1, sizeof buf, p)) out.append(buf, n);
-  const int status = pclose(p);
-  return {WEXITSTATUS(status), out};
-}
-
-std::string example(const std::string& name) {
-  return std::string(NEWTOP_SOURCE_DIR) + "/examples/" + name;
-}
+std::string example(const std::string& name) { return newtop::test::example_path(name); }
 
 // The analytic solutions agree with rkf78 to 1e-10 (tests of the library); the command reports it.
 constexpr double kAgreement = 1e-10;
@@ -38,7 +25,7 @@ TEST(AnalyticCli, ReportsCaseAndAgreementForEachExample) {
                                                        {"analytic_lagrange.toml", "lagrange"},
                                                        {"analytic_pendulum.toml", "pendulum"}};
   for (const auto& [file, name] : cases) {
-    const Result r = run("analytic " + example(file) + " --samples 8 --json");
+    const CliResult r = run_newtop("analytic " + example(file) + " --samples 8 --json");
     ASSERT_EQ(r.code, 0) << r.out;
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["case"], name);
@@ -48,23 +35,23 @@ TEST(AnalyticCli, ReportsCaseAndAgreementForEachExample) {
                 j.contains("nutation_period"));
   }
   const auto lag = nlohmann::json::parse(
-      run("analytic " + example("analytic_lagrange.toml") + " --times 0,1.5,3 --json").out);
+      run_newtop("analytic " + example("analytic_lagrange.toml") + " --times 0,1.5,3 --json").out);
   for (const char* k : {"E", "a", "a1", "b", "c", "gamma3"}) EXPECT_TRUE(lag.contains(k)) << k;
   EXPECT_EQ(lag["gamma3"].size(), 3u);
-  const auto pen =
-      nlohmann::json::parse(run("analytic " + example("analytic_pendulum.toml") + " --json").out);
+  const auto pen = nlohmann::json::parse(
+      run_newtop("analytic " + example("analytic_pendulum.toml") + " --json").out);
   EXPECT_EQ(pen["kind"], "libration");
 }
 
 TEST(AnalyticCli, BadTimesIsOneLineAndExitCode2) {
-  const Result r = run("analytic " + example("analytic_pendulum.toml") + " --times 1,x");
+  const CliResult r = run_newtop("analytic " + example("analytic_pendulum.toml") + " --times 1,x");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.out.find("--times"), std::string::npos);
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1);
 }
 
 TEST(FindIntegralsCli, JsonAndPolynomialPotential) {
-  const Result r = run("find-integrals " + example("analytic_lagrange.toml") + " --json");
+  const CliResult r = run_newtop("find-integrals " + example("analytic_lagrange.toml") + " --json");
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["integrals"].size(), 5u);
@@ -72,14 +59,15 @@ TEST(FindIntegralsCli, JsonAndPolynomialPotential) {
   // V = ½ λ γ·Iγ for the free body's moments (1, 2, 3), λ = 0.5: Brun's integral appears unnamed.
   const std::string pot = testing::TempDir() + "newtop_potential.toml";
   std::ofstream(pot) << "[potential]\nterms = [[0.25, 2, 0, 0], [0.5, 0, 2, 0], [0.75, 0, 0, 2]]\n";
-  const auto b = nlohmann::json::parse(run("find-integrals " + example("analytic_free_body.toml") +
-                                           " --potential " + pot + " --json")
-                                           .out);
+  const auto b =
+      nlohmann::json::parse(run_newtop("find-integrals " + example("analytic_free_body.toml") +
+                                       " --potential " + pot + " --json")
+                                .out);
   EXPECT_EQ(b["integrals"].size(), 4u);
   EXPECT_TRUE(b["integrals"][3]["name"].is_null());
   std::ofstream(pot) << "[potential]\nterms = [[0.25, 2, 0]]\n";
-  const Result bad =
-      run("find-integrals " + example("analytic_free_body.toml") + " --potential " + pot);
+  const CliResult bad =
+      run_newtop("find-integrals " + example("analytic_free_body.toml") + " --potential " + pot);
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.out.find("terms[0]"), std::string::npos);
 }

@@ -1,11 +1,10 @@
 // The equilibria, rotations and stability commands: JSON keys, CSV files, bad input.
 
+#include "support/cli.hpp"
+
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -21,25 +20,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int code;
-  std::string out;
-};
+using test::CliResult;
+using test::example_path;
 
 /// Runs `newtop ARGS` with stderr merged into the output.
-Result newtop(const std::string& args) {
-  const std::string cmd = std::string(NEWTOP_EXE) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), p) != nullptr) out += buf.data();
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+CliResult newtop(const std::string& args) { return test::run_newtop(args); }
 
-std::string example(const std::string& name) {
-  return std::string(NEWTOP_SOURCE_DIR) + "/examples/" + name;
-}
+std::string example(const std::string& name) { return example_path(name); }
 
 fs::path temp_file(const std::string& name) {
   return fs::temp_directory_path() /
@@ -55,7 +42,7 @@ std::vector<std::string> lines(const fs::path& p) {
 
 TEST(StabilityCli, EquilibriaJsonListsEveryEquilibrium) {
   const std::string file = example("equilibria_newtonian.toml");
-  const Result r = newtop("equilibria " + file + " --json");
+  const CliResult r = newtop("equilibria " + file + " --json");
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = io::Json::parse(r.out);
   const Model model = io::load_scenario(file).model;
@@ -77,7 +64,7 @@ TEST(StabilityCli, EquilibriaJsonListsEveryEquilibrium) {
 TEST(StabilityCli, RotationsWritesTheConeToCsv) {
   const std::string file = example("rotation_staude_cone.toml");
   const fs::path csv = temp_file("cone.csv");
-  const Result r = newtop("rotations " + file + " --json --samples 20 --out " + csv.string());
+  const CliResult r = newtop("rotations " + file + " --json --samples 20 --out " + csv.string());
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = io::Json::parse(r.out);
   const auto rows = lines(csv);
@@ -93,7 +80,7 @@ TEST(StabilityCli, RotationsWritesTheConeToCsv) {
 }
 
 TEST(StabilityCli, StabilityJsonForBeletskySpin) {
-  const Result r = newtop("stability " + example("stability_beletsky.toml") + " --json");
+  const CliResult r = newtop("stability " + example("stability_beletsky.toml") + " --json");
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = io::Json::parse(r.out);
   for (const char* key : {"eigenvalues", "max_real_part", "linearly_stable", "lyapunov_stable",
@@ -116,7 +103,7 @@ TEST(StabilityCli, StabilityJsonForBeletskySpin) {
 TEST(StabilityCli, ScansWriteCsvDiagrams) {
   const fs::path csv = temp_file("scan.csv");
   const std::string file = example("stability_beletsky.toml");
-  Result r = newtop("stability " + file + " --json --scan-omega 0:3:31 --out " + csv.string());
+  CliResult r = newtop("stability " + file + " --json --scan-omega 0:3:31 --out " + csv.string());
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_EQ(io::Json::parse(r.out)["scan"].size(), 31u);
   EXPECT_EQ(lines(csv).size(), 32u);
@@ -132,7 +119,7 @@ TEST(StabilityCli, ScansWriteCsvDiagrams) {
 
 TEST(StabilityCli, BadInputIsOneLineAndExitCodeTwo) {
   // The initial state of this example is not an equilibrium: the message gives the residual.
-  Result r = newtop("stability " + example("equilibria_newtonian.toml"));
+  CliResult r = newtop("stability " + example("equilibria_newtonian.toml"));
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.out.find("found residual"), std::string::npos) << r.out;
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1);
@@ -153,7 +140,7 @@ TEST(StabilityCli, UniformGravityAndRotorCases) {
   std::ofstream(toml) << "[body]\ninertia = [1.0, 1.5, 2.0]\ngyrostat = [0.0, 0.0, 0.3]\n"
                          "[field]\nkind = \"uniform\"\ng = 9.81\n"
                          "[initial]\nomega = [0.0, 0.0, 0.0]\ngamma = [0.0, 0.0, 1.0]\n";
-  Result r = newtop("equilibria " + toml.string() + " --json");
+  CliResult r = newtop("equilibria " + toml.string() + " --json");
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = io::Json::parse(r.out);
   EXPECT_TRUE(j["every_orientation"].get<bool>());

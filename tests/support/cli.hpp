@@ -1,0 +1,53 @@
+#pragma once
+// Running the newtop program from the tests. NEWTOP_EXE and NEWTOP_SOURCE_DIR are compile
+// definitions of every test target (tests/CMakeLists.txt).
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace newtop::test {
+
+struct CliResult {
+  int code;         ///< exit code, −1 if the program did not exit normally
+  std::string out;  ///< standard output (with standard error too when merged)
+  std::string err;  ///< standard error when kept separate
+};
+
+enum class Stderr { merged, separate };
+
+/// Runs `newtop ARGS` through the shell and collects its output.
+inline CliResult run_newtop(const std::string& args, Stderr stderr_mode = Stderr::merged) {
+  static int counter = 0;
+  const std::filesystem::path err_file =
+      std::filesystem::temp_directory_path() /
+      ("newtop_stderr_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+  const std::string redirect = stderr_mode == Stderr::merged ? " 2>&1" : " 2>" + err_file.string();
+  FILE* p = popen((std::string(NEWTOP_EXE) + " " + args + redirect).c_str(), "r");
+  CliResult r{-1, "", ""};
+  char buf[4096];
+  while (const std::size_t n = std::fread(buf, 1, sizeof buf, p)) r.out.append(buf, n);
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  if (stderr_mode == Stderr::separate) {
+    std::ifstream in(err_file);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    r.err = ss.str();
+    std::error_code ec;
+    std::filesystem::remove(err_file, ec);
+  }
+  return r;
+}
+
+/// Path of a bundled example scenario.
+inline std::string example_path(const std::string& name) {
+  return std::string(NEWTOP_SOURCE_DIR) + "/examples/" + name;
+}
+
+}  // namespace newtop::test
