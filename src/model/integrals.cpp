@@ -7,6 +7,12 @@ namespace {
 
 bool negligible(double x, double scale) { return std::abs(x) <= kConditionTolerance * scale; }
 
+// Radius of gyration sqrt(max I / M): the length against which a centre-of-mass offset is
+// negligible.
+double gyration_radius(const Body& b) {
+  return std::sqrt(b.inertia().maxCoeff() / std::max(b.mass(), 1e-300));
+}
+
 }  // namespace
 
 double brun(const Model& model, const State& s) {
@@ -20,15 +26,14 @@ double lagrange(const Model& /*model*/, const State& s) { return s.m.z(); }
 
 bool brun_holds(const Model& model) {
   const Body& b = model.body;
-  const double length = std::sqrt(b.inertia().maxCoeff() / std::max(b.mass(), 1e-300));
   const bool no_linear = model.field.g == 0.0 || b.mass() == 0.0 ||
-                         b.center_of_mass().norm() <= kConditionTolerance * length;
+                         negligible(b.center_of_mass().norm(), gyration_radius(b));
   return no_linear && b.gyrostat().isZero(0.0);
 }
 
 bool lagrange_holds(const Model& model) {
   const Body& b = model.body;
-  const double length = std::sqrt(b.inertia().maxCoeff() / std::max(b.mass(), 1e-300));
+  const double length = gyration_radius(b);
   const bool symmetric = negligible(b.A() - b.B(), b.A());
   const bool on_axis =
       model.field.g == 0.0 || b.mass() == 0.0 ||

@@ -25,7 +25,4 @@ std::string format_number(double x);
 /// Formats a vector as `[x, y, z]` with format_number.
 std::string format_vector(const Vec3& v);
 
-/// True when every component is finite.
-inline bool all_finite(const Vec3& v) { return v.allFinite(); }
-
 }  // namespace newtop

@@ -19,10 +19,6 @@ double energy(const BasicModel<F>& model, const State& s) {
 
 /// I2 = (Iω + k)·γ = m·γ: the area integral, conserved for every V(γ).
 inline double area(const State& s) { return s.m.dot(s.gamma); }
-template <Field F>
-double area(const BasicModel<F>& /*model*/, const State& s) {
-  return area(s);
-}
 
 /// I3 = γ·γ = 1: the geometric integral (a Casimir).
 inline double geometric(const State& s) { return s.gamma.squaredNorm(); }
