@@ -28,36 +28,18 @@ Body read_body(TableReader& r) {
   const double mass = r.optional_number("mass").value_or(1.0);
   const Vec3 r0 = r.optional_vec3("center_of_mass").value_or(Vec3::Zero());
   const Vec3 k = r.optional_vec3("gyrostat").value_or(Vec3::Zero());
-  try {
+  return r.checked([&] {
     Body b = has_principal ? Body::from_principal(r.vec3("inertia"), mass, r0, k)
                            : Body::from_tensor(r.mat3("inertia_tensor"), mass, r0, k);
     r.finish();
     return b;
-  } catch (const InputError& e) {
-    const std::string msg = e.what();
-    const std::string key = msg.substr(0, msg.find(':'));
-    const std::string rest = msg.substr(msg.find(':') + 2);
-    if (key == "inertia" && has_tensor) r.fail("inertia_tensor", rest);
-    if (key == "inertia" || key == "mass" || key == "center_of_mass" || key == "gyrostat" ||
-        key == "inertia_tensor") {
-      r.fail(key, rest);
-    }
-    throw;
-  }
+  });
 }
 
 QuadraticField read_field(TableReader& r, ExactSettings& exact) {
   const std::string kind = r.optional_string("kind").value_or("");
   // Unknown keys (typos) first: a misspelt "g" must be reported as such, not as a missing g.
   r.finish({"N", "plane_offset", "g", "lambda", "mu", "R", "order"});
-  auto wrap = [&](auto&& make) {
-    try {
-      return make();
-    } catch (const InputError& e) {
-      const std::string msg = e.what();
-      r.fail(msg.substr(0, msg.find(':')), msg.substr(msg.find(':') + 2));
-    }
-  };
   QuadraticField f;
   if (kind == "exact" || kind == "multipole") {
     exact.kind = kind == "exact" ? FieldKind::exact : FieldKind::multipole;
@@ -71,31 +53,26 @@ QuadraticField read_field(TableReader& r, ExactSettings& exact) {
       exact.order = static_cast<int>(order);
     }
     if (!exact.mass_model) r.fail("kind", "kind = \"" + kind + "\" needs a [mass_model] section");
-    f = wrap([&] { return QuadraticField::from_mu_R(exact.mu, exact.R); });
-    try {
-      ExactField::make(exact.mass_model, exact.mu, exact.R);
-    } catch (const InputError& e) {
-      const std::string msg = e.what();
-      r.fail(msg.substr(0, msg.find(':')), msg.substr(msg.find(':') + 2));
-    }
+    f = r.checked([&] { return QuadraticField::from_mu_R(exact.mu, exact.R); });
+    r.checked([&] { return ExactField::make(exact.mass_model, exact.mu, exact.R); });
   } else if (kind == "brun") {
     const double N = r.number("N");
     const double d = r.optional_number("plane_offset").value_or(0.0);
-    f = wrap([&] { return QuadraticField::brun(N, d); });
+    f = r.checked([&] { return QuadraticField::brun(N, d); });
   } else if (kind == "uniform") {
     const double g = r.number("g");
-    f = wrap([&] { return QuadraticField::uniform(g); });
+    f = r.checked([&] { return QuadraticField::uniform(g); });
   } else if (kind.empty() || kind == "newtonian" || kind == "coulomb") {
     const bool g = r.has("g"), lam = r.has("lambda"), R = r.has("R"), mu = r.has("mu");
     if (mu && R && !g && !lam) {
       const double vmu = r.number("mu"), vR = r.number("R");
-      f = wrap([&] { return QuadraticField::from_mu_R(vmu, vR); });
+      f = r.checked([&] { return QuadraticField::from_mu_R(vmu, vR); });
     } else if (g && R && !lam && !mu) {
       const double vg = r.number("g"), vR = r.number("R");
-      f = wrap([&] { return QuadraticField::from_g_R(vg, vR); });
+      f = r.checked([&] { return QuadraticField::from_g_R(vg, vR); });
     } else if (g && lam && !R && !mu) {
       const double vg = r.number("g"), vl = r.number("lambda");
-      f = wrap([&] { return QuadraticField::coulomb(vg, vl); });
+      f = r.checked([&] { return QuadraticField::coulomb(vg, vl); });
     } else {
       r.fail(g ? "g" : (mu ? "mu" : "lambda"),
              "expected exactly one of (g, lambda), (g, R), (mu, R), or kind = \"brun\" with N, "
@@ -158,14 +135,7 @@ Body read_body_or_mass_model(const toml::table* t, const ExactSettings& exact,
 IntegrateSection read_integrate(TableReader& r) {
   IntegrateSection s;
   s.method = r.optional_string("method");
-  if (s.method) {
-    try {
-      method_info(*s.method);
-    } catch (const InputError& e) {
-      const std::string msg = e.what();
-      r.fail("method", msg.substr(msg.find(':') + 2));
-    }
-  }
+  if (s.method) r.checked([&] { return method_info(*s.method); });
   s.step = r.optional_number("step");
   if (s.step && !(*s.step > 0))
     r.fail("step", "expected a number > 0, found " + format_number(*s.step));

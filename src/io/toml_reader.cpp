@@ -49,6 +49,18 @@ void TableReader::fail(const std::string& key, const std::string& what) const {
   throw InputError(where(table_.get(key)) + ": " + label(key) + ": " + what);
 }
 
+void TableReader::relocate(const InputError& e) const {
+  const std::string msg = e.what();
+  const auto colon = msg.find(": ");
+  const std::string key = msg.substr(0, colon);
+  const bool is_key =
+      colon != std::string::npos && !key.empty() &&
+      key.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_0123456789") ==
+          std::string::npos;
+  if (!is_key) throw e;
+  fail(key, msg.substr(colon + 2));
+}
+
 const toml::node& TableReader::require(const std::string& key) {
   known_.insert(key);
   const toml::node* node = table_.get(key);

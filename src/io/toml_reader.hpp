@@ -42,6 +42,20 @@ class TableReader {
   /// An InputError for `key` located at its node (or at the table when absent).
   [[noreturn]] void fail(const std::string& key, const std::string& what) const;
 
+  /// Re-raises an InputError of the library, whose message reads `key: what`, located at that key
+  /// of this table; a message without such a key (e.g. already located) is re-raised unchanged.
+  [[noreturn]] void relocate(const InputError& e) const;
+
+  /// Calls make(); an InputError it throws is relocated to its key in this table.
+  template <class F>
+  auto checked(F&& make) const {
+    try {
+      return make();
+    } catch (const InputError& e) {
+      relocate(e);
+    }
+  }
+
  private:
   const toml::node& require(const std::string& key);
   std::string where(const toml::node* node) const;

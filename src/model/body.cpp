@@ -17,20 +17,22 @@ void check_finite(const char* name, const Vec3& v) {
   }
 }
 
-void check_moments(const Vec3& I) {
-  check_finite("inertia", I);
+// `field` names the input the moments came from: inertia (given) or inertia_tensor (its
+// eigenvalues).
+void check_moments(const Vec3& I, const std::string& field) {
+  check_finite(field.c_str(), I);
   const char* names[3] = {"A", "B", "C"};
   for (int i = 0; i < 3; ++i) {
     if (!(I[i] > 0)) {
-      throw InputError(std::string("inertia: expected positive principal moments, found ") +
-                       names[i] + " = " + format_number(I[i]));
+      throw InputError(field + ": expected positive principal moments, found " + names[i] + " = " +
+                       format_number(I[i]));
     }
   }
   const double slack = kTriangleSlack * I.sum();
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
     if (I[i] + I[j] < I[k] - slack) {
-      throw InputError(std::string("inertia: triangle inequality ") + names[i] + " + " + names[j] +
+      throw InputError(field + ": triangle inequality " + names[i] + " + " + names[j] +
                        " >= " + names[k] + " fails: " + format_number(I[i]) + " + " +
                        format_number(I[j]) + " < " + format_number(I[k]));
     }
@@ -47,7 +49,7 @@ void check_mass(double mass) {
 
 Body Body::from_principal(const Vec3& inertia, double mass, const Vec3& center_of_mass,
                           const Vec3& gyrostat) {
-  check_moments(inertia);
+  check_moments(inertia, "inertia");
   check_mass(mass);
   check_finite("center_of_mass", center_of_mass);
   check_finite("gyrostat", gyrostat);
@@ -72,7 +74,7 @@ Body Body::from_tensor(const Mat3& J, double mass, const Vec3& center_of_mass,
   Eigen::SelfAdjointEigenSolver<Mat3> eig(0.5 * (J + J.transpose()));
   Mat3 P = eig.eigenvectors();
   if (P.determinant() < 0) P.col(2) = -P.col(2);
-  check_moments(eig.eigenvalues());
+  check_moments(eig.eigenvalues(), "inertia_tensor");
   check_mass(mass);
   check_finite("center_of_mass", center_of_mass);
   check_finite("gyrostat", gyrostat);
