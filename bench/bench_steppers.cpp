@@ -1,10 +1,20 @@
 // Cost of one step of each stepper on the same model, beside Boost.Odeint's runge_kutta4 driven
-// directly on a plain array (the peer). Run: build/bench_steppers --benchmark_repetitions=5
-// --benchmark_report_aggregates_only=true
+// directly on a plain array with a hand-written right-hand side (the peer).
+// Run: build/bench/bench_steppers --benchmark_repetitions=9 --benchmark_report_aggregates_only=true
+//      --benchmark_enable_random_interleaving=true
+// Instruction counts (repeatable on a busy machine):
+//      valgrind --tool=callgrind build/bench/bench_steppers --steps NAME N
+// runs N steps of NAME (a benchmark name below) and nothing else.
 
 #include <benchmark/benchmark.h>
 
+#include <cstring>
+#include <functional>
+#include <map>
+#include <string>
+
 #include "newtop/newtop.hpp"
+#include "wp_support.hpp"
 
 namespace {
 
@@ -22,66 +32,83 @@ State bench_state(const Model& m) {
 
 constexpr double kStep = 1e-3;
 
-void BM_Splitting(benchmark::State& st, const char* name) {
-  const Model m = bench_model();
-  State x = bench_state(m);
-  SplittingStepper s(composition_table(name));
-  for (auto _ : st) {
-    s.step(m, x, kStep);
-    benchmark::DoNotOptimize(x);
-  }
+SplittingStepper make_splitting(const char* name, FreeBodySplit split) {
+  const CompositionTable& t = composition_table(name);
+  SplitOrdering o = default_ordering(t);
+  o.free_body = split;
+  return SplittingStepper(t, o);
 }
-BENCHMARK_CAPTURE(BM_Splitting, splitting2, "splitting2");
-BENCHMARK_CAPTURE(BM_Splitting, splitting4, "splitting4");
-BENCHMARK_CAPTURE(BM_Splitting, splitting6, "splitting6");
-BENCHMARK_CAPTURE(BM_Splitting, splitting8, "splitting8");
+
+// Each benchmark as a function advancing its own state by n steps, so that the same code serves
+// Google Benchmark and the instruction counts.
+using Steps = std::function<void(std::int64_t)>;
 
 template <class S>
-void BM_Fixed(benchmark::State& st) {
-  const Model m = bench_model();
-  State x = bench_state(m);
-  S s;
-  for (auto _ : st) {
-    s.step(m, x, kStep);
-    benchmark::DoNotOptimize(x);
-  }
+Steps newtop_steps(S stepper) {
+  return [s = std::move(stepper), m = bench_model(), x = State{},
+          init = false](std::int64_t n) mutable {
+    if (!init) x = bench_state(m), init = true;
+    for (std::int64_t i = 0; i < n; ++i) {
+      s.step(m, x, kStep);
+      benchmark::DoNotOptimize(x);
+    }
+  };
 }
-BENCHMARK_TEMPLATE(BM_Fixed, Rk4Stepper)->Name("newtop_rk4");
-BENCHMARK_TEMPLATE(BM_Fixed,
-                   OdeintFixedStepper<boost::numeric::odeint::runge_kutta_dopri5<OdeState>, 5>)
-    ->Name("dopri5_fixed_step");
-BENCHMARK_TEMPLATE(BM_Fixed,
-                   OdeintFixedStepper<boost::numeric::odeint::runge_kutta_fehlberg78<OdeState>, 8>)
-    ->Name("rkf78_fixed_step");
 
 // The peer: odeint's runge_kutta4 on std::array with the right-hand side written out by hand.
-void BM_OdeintRk4(benchmark::State& st) {
+Steps odeint_rk4_steps() {
   const Model m = bench_model();
-  const Vec3 I = m.body.inertia(), k = m.body.gyrostat();
-  const Vec3 b = m.body.mass() * m.field.g * m.body.center_of_mass();
-  const double lam = m.field.lambda_;
-  auto sys = [&](const OdeState& y, OdeState& d, double) {
-    const double w0 = (y[0] - k[0]) / I[0], w1 = (y[1] - k[1]) / I[1], w2 = (y[2] - k[2]) / I[2];
-    const double g0 = b[0] + lam * I[0] * y[3], g1 = b[1] + lam * I[1] * y[4],
-                 g2 = b[2] + lam * I[2] * y[5];
-    d[0] = y[1] * w2 - y[2] * w1 + y[4] * g2 - y[5] * g1;
-    d[1] = y[2] * w0 - y[0] * w2 + y[5] * g0 - y[3] * g2;
-    d[2] = y[0] * w1 - y[1] * w0 + y[3] * g1 - y[4] * g0;
-    d[3] = y[4] * w2 - y[5] * w1;
-    d[4] = y[5] * w0 - y[3] * w2;
-    d[5] = y[3] * w1 - y[4] * w0;
+  return [rhs = wp::QuadraticRhs<double>(m), y = to_ode(bench_state(m)),
+          rk4 = boost::numeric::odeint::runge_kutta4<OdeState>(), t = 0.0](std::int64_t n) mutable {
+    for (std::int64_t i = 0; i < n; ++i) {
+      rk4.do_step(rhs, y, t, kStep);
+      t += kStep;
+      benchmark::DoNotOptimize(y);
+    }
   };
-  OdeState y = to_ode(bench_state(m));
-  boost::numeric::odeint::runge_kutta4<OdeState> rk4;
-  double t = 0;
-  for (auto _ : st) {
-    rk4.do_step(sys, y, t, kStep);
-    t += kStep;
-    benchmark::DoNotOptimize(y);
-  }
 }
-BENCHMARK(BM_OdeintRk4)->Name("odeint_runge_kutta4_peer");
+
+std::map<std::string, std::function<Steps()>> benchmarks() {
+  std::map<std::string, std::function<Steps()>> b;
+  for (const char* name : {"splitting2", "splitting4", "splitting6", "splitting8"}) {
+    b[std::string(name) + "_axes"] = [name] {
+      return newtop_steps(make_splitting(name, FreeBodySplit::axes));
+    };
+    b[std::string(name) + "_spin"] = [name] {
+      return newtop_steps(make_splitting(name, FreeBodySplit::spin));
+    };
+  }
+  b["newtop_rk4"] = [] { return newtop_steps(Rk4Stepper()); };
+  b["dopri5_fixed_step"] = [] {
+    return newtop_steps(
+        OdeintFixedStepper<boost::numeric::odeint::runge_kutta_dopri5<OdeState>, 5>());
+  };
+  b["rkf78_fixed_step"] = [] {
+    return newtop_steps(
+        OdeintFixedStepper<boost::numeric::odeint::runge_kutta_fehlberg78<OdeState>, 8>());
+  };
+  b["odeint_runge_kutta4_peer"] = odeint_rk4_steps;
+  return b;
+}
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  const auto all = benchmarks();
+  if (argc == 4 && std::strcmp(argv[1], "--steps") == 0) {
+    const auto it = all.find(argv[2]);
+    if (it == all.end()) return 2;
+    it->second()(std::atoll(argv[3]));
+    return 0;
+  }
+  for (const auto& [name, make] : all) {
+    benchmark::RegisterBenchmark(name.c_str(), [make = make](benchmark::State& st) {
+      Steps steps = make();
+      while (st.KeepRunningBatch(100)) steps(100);  // one iteration = one step
+    });
+  }
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

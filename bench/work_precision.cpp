@@ -1,67 +1,299 @@
-// Work–precision: max relative energy error over T against CPU time, for the splitting methods of
-// order 2–8 and Boost.Odeint's runge_kutta_dopri5 and runge_kutta_fehlberg78 (adaptive), on one
-// generic (non-integrable) model. Also measures the orderings of the free-body split.
-// Run: build/work_precision [T]   (default T = 1e4; prints markdown tables)
+// Work–precision in the three regimes of docs/performance.md: for each method, the least CPU time
+// to reach a final state error |Δm| + |Δγ| at T (against Fehlberg 7(8) in long double at tolerance
+// 1e-19) of 1e-6, 1e-9 and 1e-12, and, separately, a maximum relative energy error of the same
+// sizes. The step (fixed-step methods) or the tolerance (adaptive methods) is found by bisection;
+// then every method's best setting is timed in interleaved rounds and the median CPU time kept.
+//
+// Run: build/bench/work_precision [regimes] [rounds] [data.csv]
+//   regimes: letters among a, b (both λ/Ω²), c (default: abc); rounds: timing rounds (default 7);
+//   data.csv: every run of the search (method, setting, steps, error, CPU s) for plotting.
 
-#include <chrono>
-#include <cmath>
+#include <algorithm>
 #include <cstdio>
-#include <cstdlib>
+#include <functional>
 #include <string>
 #include <vector>
 
-#include "newtop/newtop.hpp"
+#include "wp_support.hpp"
 
 namespace {
 
-using namespace newtop;
-using Clock = std::chrono::steady_clock;
+using namespace wp;
 
-Model wp_model() {
-  return Model{
-      Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3(0.3, 0.2, 0.1), Vec3(0.1, -0.2, 0.05)),
-      QuadraticField::coulomb(1.0, 0.5)};
-}
-
-struct Point {
-  double seconds, max_rel_energy_error;
-  std::int64_t steps;
+struct Run {
+  State x;
+  std::int64_t steps = 0;
+  double energy_error = 0.0;  // max |E − E0|/|E0| over the steps (when observed)
 };
 
-template <class Run>
-Point measure(const Model& m, Run&& run) {
-  const State x0 = state_from_omega(m.body, Vec3(0.5, 1.1, -0.4), Vec3(0.48, -0.6, 0.64));
-  const double e0 = energy(m, x0);
-  double err = 0;
-  auto obs = [&](double, const State& x) { err = std::max(err, std::abs(energy(m, x) - e0)); };
-  const auto t0 = Clock::now();
-  const Outcome o = run(x0, obs);
-  const double secs = std::chrono::duration<double>(Clock::now() - t0).count();
-  return {secs, err / std::abs(e0), o.steps};
+struct Method {
+  std::string name;
+  bool adaptive;
+  std::function<Run(const Regime&, double, bool)> run;  // (regime, h or tol, observe energy)
+};
+
+// Tracks max |E − E0| / |E0| along a run.
+struct EnergyWatch {
+  const Model* m;
+  double e0, worst = 0.0;
+  void operator()(const State& x) {
+    worst = std::max(worst, std::abs(energy(*m, x) - e0) / std::abs(e0));
+  }
+};
+
+Method splitting(std::string label, const CompositionTable& table, SplitOrdering o) {
+  return {std::move(label), false, [&table, o](const Regime& r, double h, bool observe) {
+            SplittingStepper s(table, o);
+            EnergyWatch w{&r.model, energy(r.model, r.x0)};
+            const IntegrateOptions opt{.step = h};
+            const Outcome out = observe ? integrate(s, r.model, r.x0, 0.0, r.T, opt,
+                                                    [&](double, const State& x) { w(x); })
+                                        : integrate(s, r.model, r.x0, 0.0, r.T, opt);
+            return Run{out.state, out.steps, w.worst};
+          }};
 }
 
-void orderings(const Model& m) {
-  std::printf("\n### Ordering of the free-body split (splitting2, h = 0.01, T = 10)\n\n");
-  std::printf(
-      "| kick | axes (i, j, k) | max rel. energy error | state error at T vs rkf78 "
-      "|\n|---|---|---|---|\n");
+template <class Stepper>
+Method peer(std::string label) {
+  return {std::move(label), true, [](const Regime& r, double tol, bool observe) {
+            EnergyWatch w{&r.model, energy(r.model, r.x0)};
+            Run run;
+            run.x = observe ? odeint_run<Stepper, true>(r, tol, run.steps, w)
+                            : odeint_run<Stepper, false>(r, tol, run.steps, w);
+            run.energy_error = w.worst;
+            return run;
+          }};
+}
+
+Method newtop_rkf78() {
+  return {"newtop rkf78 (odeint through newtop)", true,
+          [](const Regime& r, double tol, bool observe) {
+            Fehlberg78Stepper s(tol, tol);
+            EnergyWatch w{&r.model, energy(r.model, r.x0)};
+            const Outcome out = observe ? integrate(s, r.model, r.x0, 0.0, r.T, {},
+                                                    [&](double, const State& x) { w(x); })
+                                        : integrate(s, r.model, r.x0, 0.0, r.T, {});
+            return Run{out.state, out.steps, w.worst};
+          }};
+}
+
+std::vector<Method> methods(bool exact_allowed) {
+  std::vector<Method> m;
+  for (const auto& t : composition_tables()) {
+    const SplitOrdering o = default_ordering(t);
+    m.push_back(splitting(std::string(t.name) + " (axes)", t, o));
+    SplitOrdering spin = o;
+    spin.free_body = FreeBodySplit::spin;
+    m.push_back(splitting(std::string(t.name) + " (spin)", t, spin));
+  }
+  if (exact_allowed) {
+    const SplitOrdering exact{{0, 1, 2}, true, true, FreeBodySplit::exact};
+    m.push_back(splitting("splitting4 (exact free body)", composition_table("splitting4"), exact));
+    for (const auto& t : near_integrable_tables()) {
+      if (t.name == "saba2" || t.name == "sbab4" || t.name == "saba4") continue;
+      m.push_back(splitting(std::string(t.name) + " (exact free body)", t, exact));
+    }
+  }
+  m.push_back(newtop_rkf78());
+  m.push_back(peer<ode::runge_kutta_fehlberg78<OdeState>>("odeint rkf78 (peer)"));
+  m.push_back(peer<ode::runge_kutta_dopri5<OdeState>>("odeint dopri5 (peer)"));
+  return m;
+}
+
+// --- regimes -------------------------------------------------------------------------------------
+
+Regime generic() {
+  Model m{
+      Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3(0.3, 0.2, 0.1), Vec3(0.1, -0.2, 0.05)),
+      QuadraticField::coulomb(1.0, 0.5)};
   const State x0 = state_from_omega(m.body, Vec3(0.5, 1.1, -0.4), Vec3(0.48, -0.6, 0.64));
-  Fehlberg78Stepper ref_s(1e-14, 1e-14);
-  const State ref = integrate(ref_s, m, x0, 0.0, 10.0, IntegrateOptions{}).state;
-  const std::array<std::array<int, 3>, 6> perms{
-      {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
-  for (bool outside : {true, false}) {
-    for (const auto& p : perms) {
-      SplitOrdering o{p, outside, false};
-      const Point pt = measure(m, [&](const State& x, auto& obs) {
-        SplittingStepper s(composition_table("splitting2"), o);
-        return integrate(s, m, x, 0.0, 10.0, IntegrateOptions{.step = 0.01}, obs);
-      });
-      SplittingStepper s(composition_table("splitting2"), o);
-      const State xe = integrate(s, m, x0, 0.0, 10.0, IntegrateOptions{.step = 0.01}).state;
-      const double dist = std::max((xe.m - ref.m).norm(), (xe.gamma - ref.gamma).norm());
-      std::printf("| %s | (%c, %c, %c) | %.3e | %.3e |\n", outside ? "outside" : "inside",
-                  "xyz"[p[0]], "xyz"[p[1]], "xyz"[p[2]], pt.max_rel_energy_error, dist);
+  return {"a",
+          "(a) generic: A, B, C = 1, 1.5, 2.2; r0 = (0.3, 0.2, 0.1); k = (0.1, -0.2, 0.05); "
+          "g = 1, lambda = 0.5; T = 40 (about 3 Lyapunov times)",
+          m,
+          x0,
+          40.0,
+          0.5};
+}
+
+// A spinning satellite (fixed point at the centre of mass: r0 = 0, k = 0) about its largest axis
+// at Ω = 1 with a nutation of 0.1 rad, in a gravity gradient λ = ratio Ω².
+Regime fast_spin(double ratio, std::string name) {
+  Model m{Body::from_principal(Vec3(1.0, 1.2, 1.5), 1.0, Vec3::Zero()),
+          QuadraticField::coulomb(0.0, ratio)};
+  const Vec3 w = Vec3(0.08, -0.06, 1.0).normalized();
+  const State x0 = state_from_omega(m.body, w, Vec3(0.3, -0.5, 0.8).normalized());
+  char d[200];
+  std::snprintf(
+      d, sizeof d,
+      "(b) fast spin: A, B, C = 1, 1.2, 1.5; r0 = 0, k = 0; |omega| = 1 about the largest "
+      "axis, nutation 0.1 rad; lambda/Omega^2 = %g; T = 1e4 (unit 1/Omega)",
+      ratio);
+  return {std::move(name), d, m, x0, 1e4, 2.0};
+}
+
+// Libration about the stable equilibrium γ = e_x (least moment) of a gravity gradient λ = 1
+// (time unit 1/√λ), amplitude about 0.2 rad.
+Regime libration() {
+  Model m{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3::Zero()),
+          QuadraticField::coulomb(0.0, 1.0)};
+  const State x0 =
+      state_from_omega(m.body, Vec3(0.05, -0.1, 0.12), Vec3(1.0, 0.15, -0.1).normalized());
+  return {"c",
+          "(c) slow libration: A, B, C = 1, 1.5, 2.2; r0 = 0, k = 0; lambda = 1; about "
+          "gamma = e_x, amplitude ~0.2 rad; T = 1e4 (unit 1/sqrt(lambda))",
+          m,
+          x0,
+          1e4,
+          2.0};
+}
+
+// --- search --------------------------------------------------------------------------------------
+
+struct Eval {
+  double param, error, cpu;
+  std::int64_t steps;
+  bool ok;
+};
+
+constexpr std::int64_t kMaxSteps = 20'000'000;  // a run above this many steps is not tried
+
+struct Context {
+  const Regime* regime;
+  LState ref;
+  FILE* data;
+};
+
+Eval evaluate(const Context& c, const Method& m, double param, bool energy_metric) {
+  if (!m.adaptive && std::ceil(c.regime->T / param) > double(kMaxSteps))
+    return {param, 0, 0, 0, false};
+  const double t0 = cpu_seconds();
+  const Run r = m.run(*c.regime, param, energy_metric);
+  const double cpu = cpu_seconds() - t0;
+  double err = energy_metric ? r.energy_error : state_error(r.x, c.ref);
+  if (!std::isfinite(err) || !is_finite(r.x)) err = INFINITY;
+  if (c.data) {
+    std::fprintf(c.data, "%s,%s,\"%s\",%.6g,%lld,%.6e,%.6e\n", c.regime->name.c_str(),
+                 energy_metric ? "energy" : "state", m.name.c_str(), param, (long long)r.steps, err,
+                 cpu);
+    std::fflush(c.data);
+  }
+  return {param, err, cpu, r.steps, true};
+}
+
+// The cheapest setting meeting `target`: fixed step — the largest h (from h_start, halving, then
+// bisecting in log h to 1%), accepted only if 0.9 h passes too; adaptive — the largest tolerance
+// (from 1e-3 down by 10, then bisecting in log tol to 2%). Returns ok = false if none is found.
+Eval search(const Context& c, const Method& m, double target, bool energy_metric, double start) {
+  auto pass = [&](const Eval& e) { return e.ok && e.error <= target; };
+  const double factor = m.adaptive ? 10.0 : 2.0, floor = m.adaptive ? 1e-16 : 0.0;
+  double hi = start;  // hi fails (or is the start), lo passes
+  Eval lo{};
+  Eval e = evaluate(c, m, start, energy_metric);
+  if (pass(e)) {
+    lo = e;  // already passes at the start: the start is the coarsest setting we try
+    return lo;
+  }
+  for (double p = start / factor;; p /= factor) {
+    if (p < floor) return {p, INFINITY, 0, 0, false};
+    e = evaluate(c, m, p, energy_metric);
+    if (!e.ok) return e;
+    if (pass(e)) {
+      lo = e;
+      hi = p * factor;
+      break;
+    }
+  }
+  const double resolution = m.adaptive ? 1.02 : 1.01;
+  while (hi / lo.param > resolution) {
+    const double mid = std::sqrt(hi * lo.param);
+    e = evaluate(c, m, mid, energy_metric);
+    if (pass(e)) {
+      lo = e;
+    } else {
+      hi = mid;
+    }
+  }
+  if (!m.adaptive) {  // guard against an accidental zero of a sign-changing error
+    const Eval check = evaluate(c, m, 0.9 * lo.param, energy_metric);
+    if (!pass(check)) return search(c, m, target, energy_metric, 0.9 * lo.param / 2);
+  }
+  return lo;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// Times every method at its setting in `rounds` interleaved rounds (each timing repeats the run
+// until it lasts 20 ms); returns the median CPU seconds per run.
+std::vector<double> time_interleaved(const Context& c, const std::vector<Method>& ms,
+                                     const std::vector<Eval>& settings, bool energy_metric,
+                                     int rounds) {
+  std::vector<std::vector<double>> t(ms.size());
+  for (int round = 0; round < rounds; ++round) {
+    for (std::size_t k = 0; k < ms.size(); ++k) {
+      const std::size_t i = (k + round) % ms.size();  // rotate the order each round
+      if (!settings[i].ok) continue;
+      const int reps = std::max(1, int(0.02 / std::max(settings[i].cpu, 1e-6)));
+      const double t0 = cpu_seconds();
+      for (int rep = 0; rep < reps; ++rep) ms[i].run(*c.regime, settings[i].param, energy_metric);
+      t[i].push_back((cpu_seconds() - t0) / reps);
+    }
+  }
+  std::vector<double> med(ms.size(), INFINITY);
+  for (std::size_t i = 0; i < ms.size(); ++i)
+    if (!t[i].empty()) med[i] = median(t[i]);
+  return med;
+}
+
+void run_regime(const Regime& r, int rounds, FILE* data) {
+  const double t0 = cpu_seconds();
+  Context c{&r, reference(r, 1e-19L), data};
+  const LState check = reference(r, 1e-18L);
+  double ref_err = 0;
+  for (int i = 0; i < 6; ++i) ref_err += std::abs(double(check[i] - c.ref[i]));
+  std::printf(
+      "\n### %s\n\nReference: rkf78 in long double at tol 1e-19 (%.1f s CPU); it differs "
+      "from the same at tol 1e-18 by %.1e.\n",
+      r.description.c_str(), cpu_seconds() - t0, ref_err);
+  const bool exact_allowed = r.model.body.gyrostat().isZero(0.0);
+  const std::vector<Method> ms = methods(exact_allowed);
+  for (bool energy_metric : {false, true}) {
+    std::printf("\n%s\n\n| method |", energy_metric ? "Max relative energy error over the run "
+                                                      "(observed at every step):"
+                                                    : "Final state error |dm| + |dgamma| at T:");
+    const double targets[] = {1e-6, 1e-9, 1e-12};
+    for (double tg : targets) std::printf(" %.0e: h or tol | steps | CPU ms | ratio |", tg);
+    std::printf("\n|---|");
+    for (int i = 0; i < 3; ++i) std::printf("---|---|---|---|");
+    std::printf("\n");
+    std::vector<std::vector<Eval>> found(3);
+    std::vector<std::vector<double>> cpu(3);
+    for (int ti = 0; ti < 3; ++ti) {
+      for (std::size_t i = 0; i < ms.size(); ++i) {
+        const double start =
+            ms[i].adaptive ? 1e-3
+                           : (ti > 0 && found[ti - 1][i].ok ? found[ti - 1][i].param : r.h_max);
+        found[ti].push_back(search(c, ms[i], targets[ti], energy_metric, start));
+      }
+      cpu[ti] = time_interleaved(c, ms, found[ti], energy_metric, rounds);
+    }
+    for (std::size_t i = 0; i < ms.size(); ++i) {
+      std::printf("| %s |", ms[i].name.c_str());
+      for (int ti = 0; ti < 3; ++ti) {
+        const Eval& e = found[ti][i];
+        const double best_peer = std::min(cpu[ti][ms.size() - 1], cpu[ti][ms.size() - 2]);
+        if (!e.ok || !std::isfinite(cpu[ti][i])) {
+          std::printf(" not reached | | | |");
+        } else {
+          std::printf(" %.3g | %lld | %.3g | %.2f |", e.param, (long long)e.steps, 1e3 * cpu[ti][i],
+                      cpu[ti][i] / best_peer);
+        }
+      }
+      std::printf("\n");
+      std::fflush(stdout);
     }
   }
 }
@@ -69,45 +301,17 @@ void orderings(const Model& m) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const double T = argc > 1 ? std::atof(argv[1]) : 1e4;
-  const Model m = wp_model();
-  std::printf(
-      "### Work–precision, T = %g (A, B, C = 1, 1.5, 2.2; r0 = (0.3, 0.2, 0.1); k = (0.1, -0.2, "
-      "0.05); g = 1, lambda = 0.5)\n\n",
-      T);
-  std::printf(
-      "| method | step or tol | steps | CPU s | max rel. energy error |\n|---|---|---|---|---|\n");
-  const std::vector<std::pair<const char*, std::vector<double>>> split{
-      {"splitting2", {0.02, 0.01, 0.005, 0.0025}},
-      {"splitting4", {0.1, 0.05, 0.025, 0.0125}},
-      {"splitting6", {0.2, 0.1, 0.05, 0.025}},
-      {"splitting8", {0.4, 0.2, 0.1, 0.05}}};
-  for (const auto& [name, steps] : split) {
-    for (double h : steps) {
-      const Point p = measure(m, [&](const State& x, auto& obs) {
-        SplittingStepper s(composition_table(name));
-        return integrate(s, m, x, 0.0, T, IntegrateOptions{.step = h}, obs);
-      });
-      std::printf("| %s | h = %g | %lld | %.3f | %.2e |\n", name, h, (long long)p.steps, p.seconds,
-                  p.max_rel_energy_error);
-    }
+  const std::string which = argc > 1 ? argv[1] : "abc";
+  const int rounds = argc > 2 ? std::atoi(argv[2]) : 7;
+  FILE* data = argc > 3 ? std::fopen(argv[3], "w") : nullptr;
+  if (data) std::fprintf(data, "regime,metric,method,setting,steps,error,cpu_s\n");
+  std::printf("Work–precision (ratio: CPU time over the best odeint peer's at the same target)\n");
+  if (which.find('a') != std::string::npos) run_regime(generic(), rounds, data);
+  if (which.find('b') != std::string::npos) {
+    run_regime(fast_spin(1e-3, "b3"), rounds, data);
+    run_regime(fast_spin(1e-5, "b5"), rounds, data);
   }
-  for (double tol : {1e-8, 1e-10, 1e-12, 1e-13}) {
-    const Point p = measure(m, [&](const State& x, auto& obs) {
-      Dopri5Stepper s(tol, tol);
-      return integrate(s, m, x, 0.0, T, IntegrateOptions{}, obs);
-    });
-    std::printf("| odeint dopri5 | tol = %g | %lld | %.3f | %.2e |\n", tol, (long long)p.steps,
-                p.seconds, p.max_rel_energy_error);
-  }
-  for (double tol : {1e-8, 1e-10, 1e-12, 1e-13, 1e-14}) {
-    const Point p = measure(m, [&](const State& x, auto& obs) {
-      Fehlberg78Stepper s(tol, tol);
-      return integrate(s, m, x, 0.0, T, IntegrateOptions{}, obs);
-    });
-    std::printf("| odeint fehlberg78 | tol = %g | %lld | %.3f | %.2e |\n", tol, (long long)p.steps,
-                p.seconds, p.max_rel_energy_error);
-  }
-  orderings(m);
+  if (which.find('c') != std::string::npos) run_regime(libration(), rounds, data);
+  if (data) std::fclose(data);
   return 0;
 }

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs newtop's build and test dependencies from Debian's packages.
+# Installs newtop's build and test dependencies from Debian's packages: GCC and clang (with the
+# sanitizer runtimes of libclang-rt-14-dev and llvm's llvm-symbolizer for readable reports).
 # Usage: scripts/install-deps.sh   (as root, or with sudo available)
 set -euo pipefail
 packages=(
@@ -7,7 +8,11 @@ packages=(
   libeigen3-dev libboost-dev libboost-math-dev
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libassimp-dev libomp-dev
+  libomp-dev
+  # pictures (python/newtop) and the 3D viewer (three.js embedded by the build; Chromium for its test)
+  python3 python3-numpy python3-matplotlib python3-pil python3-pytest libjs-three chromium
+  # clang for the sanitizer build of scripts/test.sh
+  clang libclang-rt-14-dev llvm
 )
 sudo_cmd=()
 if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi

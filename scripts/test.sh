@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Builds newtop with warnings as errors, runs every test and example (ctest), checks formatting,
-# and proves the installed CMake package works by building a small consumer project against it.
-# Usage: scripts/test.sh [BUILD_DIR]   (default: build)
+# proves the installed CMake package works by building a small consumer project against it, and
+# runs the test suite again built by clang with AddressSanitizer and UndefinedBehaviorSanitizer
+# (so the project is proven on GCC and clang, and free of memory errors and undefined behaviour
+# that the tests reach).
+# Usage: scripts/test.sh [BUILD_DIR]   (default: build; the sanitizer build goes to BUILD_DIR-sanitize)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
@@ -26,4 +29,17 @@ cmake --install "$build" --prefix "$build/stage" >/dev/null
 cmake -S tests/consumer -B "$build/consumer" -G Ninja -DCMAKE_PREFIX_PATH="$PWD/$build/stage"
 cmake --build "$build/consumer"
 "$build/consumer/newtop_consumer"
+
+echo "== sanitizers: clang, AddressSanitizer + UndefinedBehaviorSanitizer, every test and example"
+# Release optimisation keeps the instrumented tests fast; benchmarks are not built (they are not
+# tests). Any report aborts its test (-fno-sanitize-recover=all, halt_on_error). Warnings are
+# errors in the GCC build above; here clang's own warnings are shown but do not stop the run, so
+# that this stage answers one question: memory errors and undefined behaviour.
+sanitize="$build-sanitize"
+cmake -S . -B "$sanitize" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
+  -DNEWTOP_WERROR=OFF -DNEWTOP_BUILD_BENCH=OFF -DNEWTOP_SANITIZE=address,undefined
+cmake --build "$sanitize" -j "$jobs"
+ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:strict_string_checks=1 \
+  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  ctest --test-dir "$sanitize" --output-on-failure -j "$jobs"
 echo "all checks passed"

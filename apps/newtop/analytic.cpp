@@ -9,14 +9,19 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <memory>
+#include <numbers>
 #include <optional>
-#include <sstream>
+#include <type_traits>
+#include <variant>
 
 #include "command.hpp"
+#include "newtop/analysis/brun_level.hpp"
 #include "newtop/integrate/methods.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
+#include "times_option.hpp"
 
 namespace newtop::app {
 namespace {
@@ -34,31 +39,54 @@ struct AnalyticArgs {
   bool json = false;
 };
 
-std::vector<double> sample_times(const AnalyticArgs& a, const io::Scenario& sc) {
-  std::vector<double> t;
+/// The period the solution repeats with (nutation period for the Lagrange case); nullopt when
+/// it has none (equilibrium, separatrix, steady precession, Brun's quasi-periodic motion on a
+/// two-torus).
+std::optional<double> solution_period(const AnalyticSolution& sol) {
+  const double T = std::visit(
+      [](const auto& s) -> double {
+        using S = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<S, LagrangeCase>) {
+          return s.nutation_period;
+        } else if constexpr (std::is_same_v<S, BrunCase>) {
+          return std::numeric_limits<double>::quiet_NaN();
+        } else {
+          return s.period;
+        }
+      },
+      sol);
+  if (std::isfinite(T) && T > 0) return T;
+  return std::nullopt;
+}
+
+/// The sample times and where their span came from: --times; or N + 1 equally spaced times in
+/// [0, T] with T from --t-end, [integrate] t_end or, without either, one period of the solution.
+/// Empty when there is no span at all (no t_end and no period).
+std::vector<double> sample_times(const AnalyticArgs& a, const io::Scenario& sc,
+                                 const AnalyticSolution& sol, std::string& source) {
   if (a.times) {
-    std::stringstream ss(*a.times);
-    std::string item;
-    while (std::getline(ss, item, ',')) {
-      try {
-        std::size_t used = 0;
-        const double v = std::stod(item, &used);
-        if (used != item.size() || !std::isfinite(v) || v < 0) throw std::invalid_argument("");
-        t.push_back(v);
-      } catch (const std::exception&) {
-        throw InputError("--times: expected comma-separated times >= 0, found '" + item + "'");
-      }
-    }
+    source = "--times";
+    std::vector<double> t = parse_times("--times", *a.times);
     std::sort(t.begin(), t.end());
     return t;
   }
-  const double t_end = a.t_end ? *a.t_end : io::resolve_t_end(sc, {});
-  if (!(std::isfinite(t_end) && t_end > 0)) {
-    throw InputError("--t-end: expected a time > 0, found " + format_number(t_end));
+  std::optional<double> t_end = a.t_end ? a.t_end : sc.integrate.t_end;
+  source = a.t_end ? "--t-end" : "[integrate] t_end";
+  if (!t_end) {
+    t_end = solution_period(sol);
+    source = "one period";
+  }
+  if (!t_end) {
+    source = "none";
+    return {};
+  }
+  if (!(std::isfinite(*t_end) && *t_end > 0)) {
+    throw InputError(source + ": expected a time > 0, found " + format_number(*t_end));
   }
   const int n = a.samples.value_or(kDefaultSamples);
   if (n < 1) throw InputError("--samples: expected an integer >= 1, found " + std::to_string(n));
-  for (int i = 0; i <= n; ++i) t.push_back(t_end * i / n);
+  std::vector<double> t;
+  for (int i = 0; i <= n; ++i) t.push_back(i == n ? *t_end : *t_end * i / n);
   return t;
 }
 
@@ -67,6 +95,62 @@ io::Json state_json(const Body& b, const State& s) {
 }
 
 io::Json nullable(double x) { return std::isfinite(x) ? io::Json(x) : io::Json(nullptr); }
+
+/// Brun's case: the genus-2 curve w² = R(u), the ranges of u1, u2 and the torus frequencies.
+void add_brun_details(io::Json& j, const BrunCase& b, const std::vector<double>& times) {
+  const BrunCurve& k = b.curve;
+  std::vector<double> branch(k.root.begin(), k.root.end());
+  std::sort(branch.begin(), branch.end());
+  j["curve"] = {{"coefficients", k.coefficient},
+                {"branch_points", branch},
+                {"e", k.e},
+                {"nu", k.nu},
+                {"h", k.h},
+                {"c", k.c},
+                {"f", k.f},
+                {"lambda", k.lambda_}};
+  j["u_ranges"] = {{k.root[k.lower[0]], k.root[k.upper[0]]},
+                   {k.root[k.lower[1]], k.root[k.upper[1]]}};
+  j["frequencies"] = b.frequency;
+  j["periods"] = {2 * std::numbers::pi / b.frequency[0], 2 * std::numbers::pi / b.frequency[1]};
+  j["rotation_number"] = b.frequency[0] / b.frequency[1];
+  j["period_matrix"] = b.period;
+  j["sign_flips"] = b.flips;
+  j["resonant"] = b.resonance.has_value();
+  j["resonance"] =
+      b.resonance
+          ? io::Json{{"p", b.resonance->p}, {"q", b.resonance->q}, {"defect", b.resonance->defect}}
+          : io::Json(nullptr);
+  io::Json u = io::Json::array();
+  for (double t : times) {
+    const auto phi = brun_angles_at(b, t);
+    u.push_back({{"t", t}, {"u1", brun_u_at(k, 0, phi[0])}, {"u2", brun_u_at(k, 1, phi[1])}});
+  }
+  j["u"] = u;
+}
+
+/// Brun's case off the level f = 0 (unsolved): the spectral curve of the Lax pair, v² = P(u),
+/// ξ² = N(u) + 2√λ f v, with the coefficients of D = N² − 4λf² P and its roots; null when the
+/// level has no such curve (equal moments).
+io::Json brun_spectral_json(const Model& model, const State& x0) {
+  BrunCurve k;
+  try {
+    k = brun_level(model, x0);
+  } catch (const InputError&) {
+    return nullptr;
+  }
+  const BrunSpectralCurve g = brun_spectral_curve(k);
+  io::Json roots = io::Json::array();
+  for (const auto& r : g.branch_point) roots.push_back({r.real(), r.imag()});
+  return {{"discriminant", g.discriminant},
+          {"discriminant_roots", roots},
+          {"e", k.e},
+          {"nu", k.nu},
+          {"h", k.h},
+          {"c", k.c},
+          {"f", k.f},
+          {"lambda", k.lambda_}};
+}
 
 void add_case_details(io::Json& j, const AnalyticSolution& sol, const std::vector<double>& times) {
   j["period"] = nullptr;
@@ -89,7 +173,74 @@ void add_case_details(io::Json& j, const AnalyticSolution& sol, const std::vecto
     io::Json g = io::Json::array();
     for (double t : times) g.push_back({{"t", t}, {"gamma3", lagrange_gamma3(*l, t)[0]}});
     j["gamma3"] = g;
+  } else if (const auto* b = std::get_if<BrunCase>(&sol)) {
+    add_brun_details(j, *b, times);
   }
+}
+
+/// The numerical reference at the sample times (rkf78 at kReferenceTol, dense output), and the
+/// comparison. A reference that did not reach a sample time is reported as failed and that sample
+/// is not compared ("numeric": null).
+struct Comparison {
+  io::Json samples = io::Json::array();
+  std::optional<double> max_err;
+  Outcome reference;
+  std::int64_t compared = 0;
+};
+
+Comparison compare(const io::Scenario& sc, const AnalyticSolution& sol,
+                   const std::vector<double>& times) {
+  Comparison c;
+  if (times.empty()) return c;
+  const Body& b = sc.model.body;
+  std::vector<std::optional<State>> numeric(times.size());
+  MethodSettings ref{"rkf78", 0.0, kReferenceTol, kReferenceTol, std::nullopt};
+  IntegrateOptions opt;
+  if (sc.integrate.max_steps) opt.max_steps = *sc.integrate.max_steps;
+  c.reference = run_method_sampled(ref, sc.model, sc.initial, 0.0, times.back(),
+                                   OutputTimes::list(times, 0.0, times.back()), opt,
+                                   [&](std::int64_t k, double, const State& x) { numeric[k] = x; });
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    const State an = analytic_state(sol, times[k]);
+    io::Json s{{"t", times[k]}, {"analytic", state_json(b, an)}, {"numeric", nullptr}};
+    if (const auto& x = numeric[k]) {
+      const double err = std::max((omega(b, an) - omega(b, *x)).cwiseAbs().maxCoeff(),
+                                  (an.gamma - x->gamma).cwiseAbs().maxCoeff());
+      c.max_err = std::max(c.max_err.value_or(0.0), err);
+      s["numeric"] = state_json(b, *x);
+      ++c.compared;
+    }
+    c.samples.push_back(s);
+  }
+  return c;
+}
+
+void print_summary(const io::Scenario& sc, const AnalyticDetection& det, const io::Json& j,
+                   const Comparison& c, std::size_t n_times) {
+  std::cout << "newtop analytic " << sc.source << "\ncase      " << to_string(det.kind) << "\n"
+            << "          " << det.reason << "\n";
+  for (const char* key :
+       {"kind", "period", "nutation_period", "turning_points", "E", "a", "a1", "b", "c", "r",
+        "quartic_roots", "u_ranges", "frequencies", "rotation_number", "resonance"}) {
+    if (j.contains(key) && !j[key].is_null()) {
+      std::cout << "  " << key << " = " << j[key].dump() << "\n";
+    }
+  }
+  if (n_times == 0) {
+    std::cout << "samples   none: no time span (no t_end, and the solution has no period); give "
+                 "--t-end or --times to compare with a numerical run\n";
+    return;
+  }
+  std::cout << "samples   " << n_times << " over " << j["span_source"].get<std::string>()
+            << " (analytic vs rkf78 at tol " << format_number(kReferenceTol) << ")\n";
+  if (c.reference.status != Status::finished) {
+    std::cout << "reference FAILED: " << to_string(c.reference.status)
+              << " at t = " << format_number(c.reference.t) << " after " << c.reference.steps
+              << " steps; " << n_times - static_cast<std::size_t>(c.compared)
+              << " samples after it are not compared\n";
+  }
+  std::cout << "max |analytic - numeric| (omega, gamma) = "
+            << (c.max_err ? format_number(*c.max_err) : std::string("none compared")) << "\n";
 }
 
 int run(const AnalyticArgs& a) {
@@ -98,11 +249,12 @@ int run(const AnalyticArgs& a) {
   io::Json j;
   j["case"] = to_string(det.kind);
   j["reason"] = det.reason;
-  const bool solved = det.kind != AnalyticKind::brun && det.kind != AnalyticKind::none;
-  if (!solved) {
+  if (!det.solved) {
     j["period"] = nullptr, j["nutation_period"] = nullptr;
     j["turning_points"] = io::Json::array(), j["samples"] = io::Json::array();
     j["max_abs_error"] = nullptr;
+    if (det.kind == AnalyticKind::brun)
+      j["spectral_curve"] = brun_spectral_json(sc.model, sc.initial);
     if (a.json) {
       std::cout << j.dump(2) << '\n';
     } else {
@@ -111,40 +263,31 @@ int run(const AnalyticArgs& a) {
     }
     return kExitOk;
   }
-  const std::vector<double> times = sample_times(a, sc);
   const AnalyticSolution sol = analytic_solution(sc.model, sc.initial, det.kind);
+  std::string source;
+  const std::vector<double> times = sample_times(a, sc, sol, source);
   add_case_details(j, sol, times);
-  io::Json samples = io::Json::array();
-  double max_err = 0.0, t_prev = 0.0;
-  State x = sc.initial;
-  for (double t : times) {
-    Fehlberg78Stepper stepper(kReferenceTol, kReferenceTol);
-    x = integrate(stepper, sc.model, x, t_prev, t, {}).state;
-    t_prev = t;
-    const State an = analytic_state(sol, t);
-    const Body& b = sc.model.body;
-    max_err = std::max({max_err, (omega(b, an) - omega(b, x)).cwiseAbs().maxCoeff(),
-                        (an.gamma - x.gamma).cwiseAbs().maxCoeff()});
-    samples.push_back({{"t", t}, {"analytic", state_json(b, an)}, {"numeric", state_json(b, x)}});
+  const Comparison c = compare(sc, sol, times);
+  j["span_source"] = source;
+  j["samples"] = c.samples;
+  j["max_abs_error"] = c.max_err ? io::Json(*c.max_err) : io::Json(nullptr);
+  const bool failed = !times.empty() && c.reference.status != Status::finished;
+  if (!times.empty()) {
+    j["reference"] = {{"method", "rkf78"},
+                      {"tol", kReferenceTol},
+                      {"outcome", std::string(to_string(c.reference.status))},
+                      {"t", c.reference.t},
+                      {"steps", c.reference.steps},
+                      {"compared_samples", c.compared}};
+  } else {
+    j["reference"] = nullptr;
   }
-  j["samples"] = samples;
-  j["max_abs_error"] = max_err;
   if (a.json) {
     std::cout << j.dump(2) << '\n';
-    return kExitOk;
+  } else {
+    print_summary(sc, det, j, c, times.size());
   }
-  std::cout << "newtop analytic " << sc.source << "\ncase      " << to_string(det.kind) << "\n"
-            << "          " << det.reason << "\n";
-  for (const char* key : {"kind", "period", "nutation_period", "turning_points", "E", "a", "a1",
-                          "b", "c", "r", "quartic_roots"}) {
-    if (j.contains(key) && !j[key].is_null()) {
-      std::cout << "  " << key << " = " << j[key].dump() << "\n";
-    }
-  }
-  std::cout << "samples   " << times.size() << " (analytic vs rkf78 at tol "
-            << format_number(kReferenceTol)
-            << ")\nmax |analytic - numeric| (omega, gamma) = " << format_number(max_err) << "\n";
-  return kExitOk;
+  return failed ? kExitIncomplete : kExitOk;
 }
 
 const RegisterCommand reg{Command{

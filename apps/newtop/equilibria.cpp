@@ -8,8 +8,10 @@
 #include <memory>
 
 #include "command.hpp"
+#include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
+#include "orbit_commands.hpp"
 #include "summary.hpp"
 
 namespace newtop::app {
@@ -22,8 +24,10 @@ struct EquilibriaArgs {
 
 io::Json equilibria_json(const EquilibriumSet& set) {
   io::Json list = io::Json::array();
+  int index = 0;
   for (const auto& e : set.equilibria) {
     io::Json j;
+    j["index"] = ++index;  // 1-based, the K of newtop stability --equilibrium K
     j["gamma"] = io::to_json(e.gamma);
     j["kappa"] = e.kappa;
     j["potential"] = e.potential;
@@ -60,12 +64,13 @@ void print_equilibria(std::ostream& os, const EquilibriumSet& set) {
     return;
   }
   os << set.equilibria.size() << " isolated equilibria (omega = 0)\n";
-  os << "  type        gamma                                                        kappa"
+  os << "  #   type        gamma                                                        kappa"
         "                   V\n";
+  int index = 0;
   for (const auto& e : set.equilibria) {
-    os << "  " << std::left << std::setw(10) << to_string(e.type) << "  " << std::setw(60)
-       << format_vector(e.gamma) << " " << std::setw(23) << format_number(e.kappa) << " "
-       << format_number(e.potential) << "\n";
+    os << "  " << std::left << std::setw(4) << ++index << std::setw(10) << to_string(e.type) << "  "
+       << std::setw(60) << format_vector(e.gamma) << " " << std::setw(23) << format_number(e.kappa)
+       << " " << format_number(e.potential) << "\n";
   }
   for (const auto& c : set.circles) {
     os << "  circle of equilibria: gamma_"
@@ -77,15 +82,20 @@ void print_equilibria(std::ostream& os, const EquilibriumSet& set) {
      << (set.count_rule_holds() ? " (holds)" : " (does not apply: degenerate points or families)")
      << "\n";
   os << "each gamma is the generator of the Staude cone gamma.(I gamma x r0) = 0 through it\n";
+  if (!set.equilibria.empty()) {
+    os << "newtop stability SCENARIO --equilibrium K analyses the K-th (K = 1 to "
+       << set.equilibria.size() << ")\n";
+  }
 }
 
 int run(const EquilibriaArgs& a) {
+  if (io::is_orbit_scenario(a.scenario)) return orbit_equilibria(a.scenario, a.json);
   const io::Scenario sc = io::load_scenario(a.scenario);
   const EquilibriumSet set = find_equilibria(sc.model);
   if (a.json) {
     io::Json j = equilibria_json(set);
     j["model"] = model_json(sc.model);
-    std::cout << j.dump(2) << '\n';
+    print_json(std::cout, j);
     return kExitOk;
   }
   std::cout << "newtop equilibria " << sc.source << "\n";

@@ -62,26 +62,40 @@ Scan parse_scan(const std::string& text) {
   return s;
 }
 
-io::Json values_json(const FieldValues& v) {
+io::Json matrix_json(const Mat3& m) {
+  io::Json J = io::Json::array();
+  for (int i = 0; i < 3; ++i) J.push_back(io::to_json(Vec3(m.row(i))));
+  return J;
+}
+
+/// The field's values at γ and its Hessian ∂²V/∂γ².
+struct Values {
+  FieldValues v;
+  Mat3 hessian;
+};
+
+io::Json values_json(const Values& x) {
+  const FieldValues& v = x.v;
   return {{"potential", v.potential},
           {"grad_gamma", io::to_json(v.grad_gamma)},
           {"dV_dR", v.dV_dR},
           {"moment", io::to_json(v.moment)},
-          {"force", io::to_json(v.force)}};
+          {"force", io::to_json(v.force)},
+          {"hessian_gamma", matrix_json(x.hessian)}};
 }
 
-FieldValues difference(const FieldValues& a, const FieldValues& b) {
-  return {a.potential - b.potential, a.grad_gamma - b.grad_gamma, a.dV_dR - b.dV_dR,
-          a.moment - b.moment, a.force - b.force};
+Values difference(const Values& a, const Values& b) {
+  const FieldValues &x = a.v, &y = b.v;
+  return {{x.potential - y.potential, x.grad_gamma - y.grad_gamma, x.dV_dR - y.dV_dR,
+           x.moment - y.moment, x.force - y.force},
+          a.hessian - b.hessian};
 }
 
 io::Json mass_properties_json(const MassProperties& mp, const Body& body) {
-  io::Json J = io::Json::array();
-  for (int i = 0; i < 3; ++i) J.push_back(io::to_json(Vec3(mp.inertia_tensor.row(i))));
   const Mat3& P = body.principal_axes();
   return {{"mass", mp.mass},
           {"center_of_mass", io::to_json(mp.center_of_mass)},
-          {"inertia_tensor", J},
+          {"inertia_tensor", matrix_json(mp.inertia_tensor)},
           {"principal_moments", io::to_json(body.inertia())},
           {"principal_axes",
            io::Json::array({io::to_json(P.col(0)), io::to_json(P.col(1)), io::to_json(P.col(2))})}};
@@ -98,12 +112,16 @@ double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) 
   return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
-void print_values(const char* name, const FieldValues& v) {
+void print_values(const char* name, const Values& x) {
+  const FieldValues& v = x.v;
   std::cout << name << "  V = " << format_number(v.potential)
             << "\n        dV/dgamma = " << format_vector(v.grad_gamma)
             << "\n        dV/dR = " << format_number(v.dV_dR)
             << "\n        L = " << format_vector(v.moment)
-            << "\n        F = " << format_vector(v.force) << "\n";
+            << "\n        F = " << format_vector(v.force) << "\n        d2V/dgamma2 = ["
+            << format_vector(Vec3(x.hessian.row(0))) << ", "
+            << format_vector(Vec3(x.hessian.row(1))) << ", "
+            << format_vector(Vec3(x.hessian.row(2))) << "]\n";
 }
 
 int run(const FieldArgs& a) {
@@ -123,9 +141,10 @@ int run(const FieldArgs& a) {
   const Mat3& P = body.principal_axes();
   const Vec3 gamma = P.transpose() * parse_gamma(a.gamma);  // user frame → principal axes
   auto at = [&](double r) {
-    const FieldValues ex = field_values(ExactField::make(e.mass_model, mu, r, P), gamma);
+    const ExactField x = ExactField::make(e.mass_model, mu, r, P);
     const MultipoleField q = MultipoleField::make(*e.mass_model, 3, mu, r, P);
-    return std::pair{ex, field_values(q, gamma)};
+    return std::pair{Values{field_values(x, gamma), hessian_gamma(body, x, gamma)},
+                     Values{field_values(q, gamma), hessian_gamma(body, q, gamma)}};
   };
   io::Json j;
   j["scenario"] = sc.source;
@@ -147,9 +166,9 @@ int run(const FieldArgs& a) {
       const double r = s.R1 * std::pow(s.R2 / s.R1, static_cast<double>(i) / (s.n - 1));
       const auto [x, q] = at(r);
       Rs.push_back(r);
-      dV.push_back(std::abs(x.potential - q.potential));
-      dL.push_back((x.moment - q.moment).norm());
-      rel.push_back(dL.back() / x.moment.norm());
+      dV.push_back(std::abs(x.v.potential - q.v.potential));
+      dL.push_back((x.v.moment - q.v.moment).norm());
+      rel.push_back(dL.back() / x.v.moment.norm());
     }
     j["scan"] = {{"R", Rs},
                  {"potential_error", dV},

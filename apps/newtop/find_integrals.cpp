@@ -1,11 +1,8 @@
 // newtop find-integrals SCENARIO.toml: numerical search for first integrals polynomial in (ω, γ).
-// An optional --potential FILE.toml replaces the scenario's V(γ) by a general polynomial:
-//   [potential]
-//   terms = [[coefficient, i, j, k], ...]   # V = Σ coefficient γ1^i γ2^j γ3^k
+// An optional --potential FILE.toml replaces the scenario's V(γ) by a general polynomial
+// (newtop/io/potential_file.hpp).
 
 #include "newtop/analysis/find_integrals.hpp"
-
-#include <toml++/toml.h>
 
 #include <iostream>
 #include <memory>
@@ -13,12 +10,11 @@
 
 #include "command.hpp"
 #include "newtop/io/output.hpp"
+#include "newtop/io/potential_file.hpp"
 #include "newtop/io/scenario.hpp"
 
 namespace newtop::app {
 namespace {
-
-constexpr int kMaxPotentialDegree = 8;
 
 struct FindArgs {
   std::string scenario;
@@ -27,48 +23,6 @@ struct FindArgs {
   std::optional<std::string> potential;
   bool json = false;
 };
-
-[[noreturn]] void bad_term(const std::string& path, std::size_t i, const std::string& what) {
-  throw InputError(path + ": [potential] terms[" + std::to_string(i) + "]: " + what);
-}
-
-PolynomialPotential read_potential(const std::string& path) {
-  toml::table doc;
-  try {
-    doc = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    throw InputError(path + ":" + std::to_string(e.source().begin.line) +
-                     ": malformed TOML: " + std::string(e.description()));
-  }
-  const toml::table* pot = doc["potential"].as_table();
-  if (!pot) throw InputError(path + ": [potential]: missing section");
-  for (const auto& [key, node] : *pot) {
-    if (key.str() != "terms") {
-      throw InputError(path + ": [potential] " + std::string(key.str()) +
-                       ": unknown key (expected only terms)");
-    }
-  }
-  const toml::array* terms = (*pot)["terms"].as_array();
-  if (!terms) throw InputError(path + ": [potential] terms: expected an array of [c, i, j, k]");
-  PolynomialPotential v;
-  for (std::size_t i = 0; i < terms->size(); ++i) {
-    const toml::array* t = (*terms)[i].as_array();
-    if (!t || t->size() != 4) bad_term(path, i, "expected [coefficient, i, j, k]");
-    const auto c = (*t)[0].value<double>();
-    if (!c || !std::isfinite(*c)) bad_term(path, i, "expected a finite coefficient");
-    PotentialTerm term{*c, {}};
-    for (int k = 0; k < 3; ++k) {
-      const auto e = (*t)[k + 1].value<std::int64_t>();
-      if (!e || *e < 0 || *e > kMaxPotentialDegree) {
-        bad_term(path, i,
-                 "expected integer exponents in 0.." + std::to_string(kMaxPotentialDegree));
-      }
-      term.power[k] = static_cast<int>(*e);
-    }
-    v.terms.push_back(term);
-  }
-  return v;
-}
 
 io::Json search_json(const IntegralSearch& s) {
   io::Json list = io::Json::array();
@@ -114,10 +68,11 @@ int run(const FindArgs& a) {
   const io::Scenario sc = io::load_scenario(a.scenario);
   const SearchOptions opt{.degree = a.degree, .points = a.points};
   const IntegralSearch s =
-      a.potential
-          ? find_integrals(
-                BasicModel<PolynomialPotential>{sc.model.body, read_potential(*a.potential)}, opt)
-          : find_integrals(sc.model, opt);
+      a.potential ? find_integrals(
+                        BasicModel<PolynomialPotential>{
+                            sc.model.body, io::load_potential(*a.potential, sc.model.body)},
+                        opt)
+                  : find_integrals(sc.model, opt);
   if (a.json) {
     std::cout << search_json(s).dump(2) << '\n';
   } else {

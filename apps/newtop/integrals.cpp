@@ -4,8 +4,10 @@
 #include <memory>
 
 #include "command.hpp"
+#include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
+#include "orbit_commands.hpp"
 #include "summary.hpp"
 
 namespace newtop::app {
@@ -17,6 +19,7 @@ struct IntegralsArgs {
 };
 
 int run(const IntegralsArgs& a) {
+  if (io::is_orbit_scenario(a.scenario)) return orbit_integrals(a.scenario, a.json);
   const io::Scenario sc = io::load_scenario(a.scenario);
   const IntegralValues v = integrals(sc.model, sc.initial);
   const auto conserved = conserved_integrals(sc.model);
@@ -25,16 +28,15 @@ int run(const IntegralsArgs& a) {
     j["integrals"] = io::to_json(v);
     j["conserved"] = conserved;
     j["model"] = model_json(sc.model);
-    std::cout << j.dump(2) << '\n';
+    print_json(std::cout, j);
     return kExitOk;
   }
   std::cout << "newtop integrals " << sc.source << "\n";
   print_model(std::cout, sc.model);
-  std::cout.precision(17);
-  std::cout << "energy     " << v.energy << "\narea       " << v.area << "\ngeometric  "
-            << v.geometric << "\n";
-  if (v.brun) std::cout << "brun       " << *v.brun << "\n";
-  if (v.lagrange) std::cout << "lagrange   " << *v.lagrange << "\n";
+  std::cout << "energy     " << format_number(v.energy) << "\narea       " << format_number(v.area)
+            << "\ngeometric  " << format_number(v.geometric) << "\n";
+  if (v.brun) std::cout << "brun       " << format_number(*v.brun) << "\n";
+  if (v.lagrange) std::cout << "lagrange   " << format_number(*v.lagrange) << "\n";
   std::cout << "conserved:";
   for (const auto& c : conserved) std::cout << " " << c;
   std::cout << "\n";

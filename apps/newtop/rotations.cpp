@@ -22,8 +22,7 @@ struct RotationsArgs {
   bool json = false;
 };
 
-void write_csv(const std::string& path, const RotationFamilies& f) {
-  io::AtomicFile file(path);
+void write_csv(io::AtomicFile& file, const RotationFamilies& f) {
   std::ostream& os = file.stream();
   os << "gamma1,gamma2,gamma3,omega_squared,admissible\n";
   for (const auto& c : f.cone) {
@@ -69,13 +68,16 @@ void print_rotations(std::ostream& os, const RotationFamilies& f) {
 
 int run(const RotationsArgs& a) {
   const io::Scenario sc = io::load_scenario(a.scenario);
+  // The CSV is created (and checked against the inputs) before any work.
+  std::unique_ptr<io::AtomicFile> file;
+  if (a.out) file = std::make_unique<io::AtomicFile>(*a.out, sc.input_files);
   const RotationFamilies f = permanent_rotations(sc.model, a.samples);
-  if (a.out) write_csv(*a.out, f);
+  if (file) write_csv(*file, f);
   if (a.json) {
     io::Json j = rotations_json(f);
     if (a.out) j["csv"] = *a.out;
     j["model"] = model_json(sc.model);
-    std::cout << j.dump(2) << '\n';
+    print_json(std::cout, j);
     return kExitOk;
   }
   std::cout << "newtop rotations " << sc.source << "\n";

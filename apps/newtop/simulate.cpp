@@ -1,33 +1,53 @@
 // newtop simulate SCENARIO.toml: integrate the Euler–Poisson equations, report integrals' drift.
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
 
 #include "command.hpp"
+#include "interrupt.hpp"
 #include "newtop/exact/multipole.hpp"
 #include "newtop/integrate/methods.hpp"
+#include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
+#include "orbit_commands.hpp"
 #include "summary.hpp"
+#include "times_option.hpp"
 
 namespace newtop::app {
 namespace {
 
 struct SimulateArgs {
   std::string scenario;
-  std::optional<double> t_end, step, tol;
-  std::optional<std::string> method, out;
+  std::optional<double> t_end, step, tol, dt_out;
+  std::optional<std::string> method, out, times;
   std::optional<std::int64_t> every;
   bool json = false;
 };
 
-/// Tracks max |I(t) − I(0)| of every integral that holds.
+/// Everything a run needs, checked before any work is done.
+struct RunPlan {
+  MethodSettings method;
+  double t0 = 0, t_end = 0;
+  IntegrateOptions options;
+  std::optional<std::string> out_path;
+  std::int64_t every = 1;
+  std::optional<OutputTimes> times;  ///< rows at these times instead of every N-th step
+};
+
+/// Tracks max |I(t) − I(0)| of every integral that holds, and the largest |m| (the scale of the
+/// area integral's drift).
 template <class M>
 struct DriftTracker {
-  const M& model;
-  IntegralValues initial, max_drift;
+  DriftTracker(const M& m, const State& x0) : model(m), initial(integrals(m, x0)) {
+    max_drift = initial;
+    max_drift.energy = max_drift.area = max_drift.geometric = 0.0;
+    if (max_drift.brun) max_drift.brun = 0.0;
+    if (max_drift.lagrange) max_drift.lagrange = 0.0;
+  }
   void observe(const State& s) {
     const IntegralValues v = integrals(model, s);
     auto upd = [](double& m, double a, double b) { m = std::max(m, std::abs(a - b)); };
@@ -36,7 +56,11 @@ struct DriftTracker {
     upd(max_drift.geometric, v.geometric, initial.geometric);
     if (v.brun) upd(*max_drift.brun, *v.brun, *initial.brun);
     if (v.lagrange) upd(*max_drift.lagrange, *v.lagrange, *initial.lagrange);
+    max_m = std::max(max_m, s.m.norm());
   }
+  const M& model;
+  IntegralValues initial, max_drift;
+  double max_m = 0;
 };
 
 const char* kind_name(io::FieldKind k) {
@@ -45,78 +69,157 @@ const char* kind_name(io::FieldKind k) {
                                          : "quadratic";
 }
 
-template <class M>
-int run_in(const SimulateArgs& a, const io::Scenario& sc, const M& model) {
-  const io::IntegrateOverrides ov{a.method, a.step, a.tol, a.t_end};
-  const MethodSettings method = io::resolve_method(sc, ov);
-  const double t_end = io::resolve_t_end(sc, ov);
-  const std::optional<std::string> out_path = a.out ? a.out : sc.output.file;
-  const std::int64_t every = a.every.value_or(sc.output.every);
-  if (every < 1)
-    throw InputError("--every: expected an integer >= 1, found " + std::to_string(every));
-
-  IntegrateOptions options;
-  if (sc.integrate.max_steps) options.max_steps = *sc.integrate.max_steps;
-
-  std::unique_ptr<io::AtomicFile> file;
-  std::unique_ptr<io::CsvTrajectory> csv;
-  if (out_path) {
-    file = std::make_unique<io::AtomicFile>(*out_path);
-    // The CSV's integral columns are those of the quadratic model (docs/exact_field.md).
-    csv = std::make_unique<io::CsvTrajectory>(file->stream(), sc.model);
+/// The time arguments and, for fixed-step methods, the step count (a run that could never reach
+/// t_end is bad input, not an outcome).
+void check_span(const io::Scenario& sc, const RunPlan& p) {
+  check_time_span(p.t0, p.t_end);
+  if (p.t_end == p.t0) {
+    throw InputError("t_end: expected a time different from t0 = " + format_number(p.t0) +
+                     ", found " + format_number(p.t_end) + " (a run of no length)");
   }
-  const IntegralValues initial = integrals(model, sc.initial);
-  IntegralValues zero = initial;
-  zero.energy = zero.area = zero.geometric = 0.0;
-  if (zero.brun) zero.brun = 0.0;
-  if (zero.lagrange) zero.lagrange = 0.0;
-  DriftTracker<M> drift{model, initial, zero};
+  if (method_info(p.method.name).kind == MethodKind::adaptive) return;
+  const std::int64_t n = fixed_step_count(p.t0, p.t_end, p.method.step);
+  if (n > p.options.max_steps) {
+    throw InputError("step: the run from t0 = " + format_number(p.t0) +
+                     " to t_end = " + format_number(p.t_end) + " at step " +
+                     format_number(p.method.step) + " takes " + std::to_string(n) +
+                     " steps, more than max_steps = " + std::to_string(p.options.max_steps) +
+                     (sc.integrate.max_steps ? " ([integrate] max_steps)" : " (the default)"));
+  }
+}
+
+RunPlan make_plan(const SimulateArgs& a, const io::Scenario& sc) {
+  RunPlan p;
+  const io::IntegrateOverrides ov{a.method, a.step, a.tol, a.t_end};
+  p.method = io::resolve_method(sc, ov);
+  p.t0 = sc.integrate.t0;
+  if (!a.t_end && !sc.integrate.t_end && a.times) {
+    p.t_end = times_end("--times", parse_times("--times", *a.times), p.t0);
+  } else {
+    p.t_end = io::resolve_t_end(sc, ov);
+  }
+  if (sc.integrate.max_steps) p.options.max_steps = *sc.integrate.max_steps;
+  check_span(sc, p);
+  p.out_path = a.out ? a.out : sc.output.file;
+  const bool cli_rows = a.every || a.dt_out || a.times;  // the command line overrides [output]
+  p.every = a.every.value_or(cli_rows ? 1 : sc.output.every);
+  if (p.every < 1) {
+    throw InputError("--every: expected an integer >= 1, found " + std::to_string(p.every));
+  }
+  const std::optional<double> dt = a.dt_out ? a.dt_out : (cli_rows ? std::nullopt : sc.output.dt);
+  if (dt) p.times = OutputTimes::every(*dt, p.t0, p.t_end);
+  if (a.times) p.times = output_times_option("--times", *a.times, p.t0, p.t_end);
+  if (p.times && p.times->size() > p.options.max_steps) {
+    // Each row costs at least one step of a fixed-step method and one CSV line of any method.
+    throw InputError(std::string(a.times    ? "--times"
+                                 : a.dt_out ? "--dt-out"
+                                            : "[output] dt") +
+                     ": " + std::to_string(p.times->size()) +
+                     " output times, more than max_steps = " + std::to_string(p.options.max_steps) +
+                     (sc.integrate.max_steps ? " ([integrate] max_steps)" : " (the default)"));
+  }
+  if (p.times && !p.out_path) {
+    throw InputError(std::string(a.times ? "--times" : "--dt-out") +
+                     ": output times need a CSV file: give --out or [output] file");
+  }
+  return p;
+}
+
+/// Runs the plan, writing the CSV rows; every step is checked for a pending SIGINT/SIGTERM.
+template <class M>
+Outcome run_plan(const RunPlan& p, const M& model, const State& x0, DriftTracker<M>& drift,
+                 io::CsvTrajectory* csv) {
   std::int64_t count = 0;
   double last_written = std::nan("");
-  auto observer = [&](double t, const State& s) {
+  auto on_step = [&](double t, const State& s) {
+    throw_if_interrupted(t);
     drift.observe(s);
-    if (csv && count % every == 0) {
+    if (csv && !p.times && count % p.every == 0) {
       csv->write(t, s);
       last_written = t;
     }
     ++count;
   };
-  const Outcome out =
-      run_method(method, model, sc.initial, sc.integrate.t0, t_end, options, observer);
+  if (p.times) {
+    auto on_sample = [&](std::int64_t, double t, const State& s) { csv->write(t, s); };
+    return run_method_sampled(p.method, model, x0, p.t0, p.t_end, *p.times, p.options, on_sample,
+                              on_step);
+  }
+  const Outcome out = run_method(p.method, model, x0, p.t0, p.t_end, p.options, on_step);
   if (csv && last_written != out.t) csv->write(out.t, out.state);  // always end on the last state
-  if (file) file->commit();
+  return out;
+}
 
-  const IntegralValues final_values = integrals(model, out.state);
-  SimulationReport rep{sc, method, out, initial, final_values, drift.max_drift, out_path};
-  if (sc.exact.kind == io::FieldKind::quadratic) {
+/// The Casimirs γ·γ and m·γ are constants of every field's motion; their drift, relative to
+/// γ·γ(0) and to max |m|, is a lower bound of the state's relative error (δ(γ·γ) = 2γ·δγ + |δγ|²).
+CasimirCheck casimir_check(const IntegralValues& initial, const IntegralValues& drift,
+                           double max_m) {
+  CasimirCheck c;
+  c.geometric = drift.geometric / initial.geometric;
+  c.area = max_m > 0 ? drift.area / max_m : 0.0;
+  return c;
+}
+
+/// The summary or the JSON; with an exact or multipole field, the quadratic model's run `q` beside.
+void print_report(const SimulateArgs& a, const io::Scenario& sc, SimulationReport& rep,
+                  const std::optional<Outcome>& q) {
+  if (!q) {
     if (a.json) {
-      std::cout << simulation_json(rep).dump(2) << '\n';
+      print_json(std::cout, simulation_json(rep));
     } else {
       print_simulation_summary(std::cout, rep);
     }
-    return out.status == Status::finished ? kExitOk : kExitIncomplete;
+    return;
   }
-  // Exact or multipole field: the same run in the quadratic model, and the difference.
-  const Outcome q = run_method(method, sc.model, sc.initial, sc.integrate.t0, t_end, options);
-  const Vec3 dw = omega(sc.model.body, out.state) - omega(sc.model.body, q.state);
-  const double dg = (out.state.gamma - q.state.gamma).norm();
+  const State& x = rep.outcome.state;
+  const Vec3 dw = omega(sc.model.body, x) - omega(sc.model.body, q->state);
+  const double dg = (x.gamma - q->state.gamma).norm();
   if (a.json) {
     io::Json j = simulation_json(rep);
     j["field"] = {{"kind", kind_name(sc.exact.kind)}, {"mu", sc.exact.mu}, {"R", sc.exact.R}};
     if (sc.exact.kind == io::FieldKind::multipole) j["field"]["order"] = sc.exact.order;
-    j["quadratic_comparison"] = {{"outcome", std::string(to_string(q.status))},
-                                 {"gamma", io::to_json(q.state.gamma)},
-                                 {"omega", io::to_json(omega(sc.model.body, q.state))},
+    j["quadratic_comparison"] = {{"outcome", std::string(to_string(q->status))},
+                                 {"gamma", io::to_json(q->state.gamma)},
+                                 {"omega", io::to_json(omega(sc.model.body, q->state))},
                                  {"difference_gamma", dg},
                                  {"difference_omega", dw.norm()}};
-    std::cout << j.dump(2) << '\n';
-  } else {
-    std::cout << "field     " << kind_name(sc.exact.kind) << " (mu = " << format_number(sc.exact.mu)
-              << ", R = " << format_number(sc.exact.R) << ")\n";
-    print_simulation_summary(std::cout, rep);
-    std::cout << "quadratic model, same method: |gamma - gamma_q| = " << format_number(dg)
-              << "   |omega - omega_q| = " << format_number(dw.norm()) << "\n";
+    print_json(std::cout, j);
+    return;
   }
+  rep.field_line = std::string(kind_name(sc.exact.kind)) + " (mu = " + format_number(sc.exact.mu) +
+                   ", R = " + format_number(sc.exact.R) + ")";
+  print_simulation_summary(std::cout, rep);
+  std::cout << "quadratic model, same method: |gamma - gamma_q| = " << format_number(dg)
+            << "   |omega - omega_q| = " << format_number(dw.norm()) << "\n";
+}
+
+template <class M>
+int run_in(const SimulateArgs& a, const io::Scenario& sc, const M& model) {
+  const RunPlan plan = make_plan(a, sc);
+  std::unique_ptr<io::AtomicFile> file;
+  std::unique_ptr<io::CsvTrajectory> csv;
+  if (plan.out_path) {
+    file = std::make_unique<io::AtomicFile>(*plan.out_path, sc.input_files);
+    // The CSV's integral columns are those of the quadratic model (docs/exact_field.md).
+    csv = std::make_unique<io::CsvTrajectory>(file->stream(), sc.model);
+  }
+  DriftTracker<M> drift(model, sc.initial);
+  const Outcome out = run_plan(plan, model, sc.initial, drift, csv.get());
+  // Exact or multipole field: the same run in the quadratic model, for comparison.
+  std::optional<Outcome> q;
+  if (sc.exact.kind != io::FieldKind::quadratic) {
+    auto check = [](double t, const State&) { throw_if_interrupted(t); };
+    q = run_method(plan.method, sc.model, sc.initial, plan.t0, plan.t_end, plan.options, check);
+  }
+  throw_if_interrupted(out.t);
+  if (file) file->commit();
+
+  SimulationReport rep{
+      sc,           plan.method, out, drift.initial, integrals(model, out.state), drift.max_drift,
+      plan.out_path};
+  rep.casimir = casimir_check(drift.initial, drift.max_drift, drift.max_m);
+  if (rep.casimir.exceeded()) std::cerr << "newtop: warning: " << rep.casimir.warning() << '\n';
+  print_report(a, sc, rep, q);
   return out.status == Status::finished ? kExitOk : kExitIncomplete;
 }
 
@@ -139,8 +242,19 @@ auto with_field(const io::Scenario& sc, Run&& run) {
 }
 
 int run(const SimulateArgs& a) {
+  if (io::is_orbit_scenario(a.scenario)) {
+    return orbit_simulate(a.scenario, {a.t_end, a.step, a.tol, a.method, a.out, a.every, a.json});
+  }
   const io::Scenario sc = io::load_scenario(a.scenario);
-  return with_field(sc, [&](const auto& model) { return run_in(a, sc, model); });
+  const InterruptGuard guard;
+  try {
+    return with_field(sc, [&](const auto& model) { return run_in(a, sc, model); });
+  } catch (const Interrupted& e) {
+    std::cerr << "newtop: interrupted by " << signal_name(e.signal)
+              << " at t = " << format_number(e.t)
+              << (a.out || sc.output.file ? "; the output file was not written" : "") << '\n';
+    return 128 + e.signal;
+  }
 }
 
 const RegisterCommand reg{Command{
@@ -157,7 +271,15 @@ const RegisterCommand reg{Command{
                                  "absolute and relative tolerance (selects rkf78 by default)");
       step->excludes(tol);
       sub.add_option("--out", a->out, "write the trajectory to this CSV file");
-      sub.add_option("--every", a->every, "write every N-th step to the CSV (default 1)");
+      auto* every =
+          sub.add_option("--every", a->every, "write every N-th step to the CSV (default 1)");
+      auto* dt = sub.add_option("--dt-out", a->dt_out,
+                                "write CSV rows at t0 + k*D (dense output; overrides [output] dt)");
+      auto* times = sub.add_option("--times", a->times,
+                                   "write CSV rows at these comma-separated times (t_end defaults "
+                                   "to the last)");
+      every->excludes(dt)->excludes(times);
+      dt->excludes(times);
       sub.add_flag("--json", a->json, "print one JSON object instead of the summary");
       return [a] { return run(*a); };
     }}};

@@ -5,12 +5,15 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 #include "command.hpp"
+#include "newtop/analysis/equilibria.hpp"
 #include "newtop/analysis/stability_spin.hpp"
+#include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
+#include "orbit_commands.hpp"
+#include "stability_scan.hpp"
 #include "summary.hpp"
 
 namespace newtop::app {
@@ -18,42 +21,18 @@ namespace {
 
 struct StabilityArgs {
   std::string scenario;
-  std::optional<std::string> axis, scan_omega, scan, out;
+  std::optional<std::string> axis, scan_omega, scan, out, diagram;
   std::optional<double> omega;
+  std::optional<int> equilibrium;  // 1-based, as `newtop equilibria` numbers its list
   bool json = false;
 };
 
-struct Range {
-  std::string name;
-  double lo, hi;
-  int n;
-  double at(int k) const { return n == 1 ? lo : lo + (hi - lo) * k / (n - 1); }
+/// The state analysed, where it came from, and its polishing by Newton's method.
+struct Chosen {
+  State state;
+  std::optional<int> axis;  // the principal axis of a spin γ = e_axis, ω ∥ e_axis
+  PolishedFixedPoint polish;
 };
-
-/// "LO:HI:N" (optionally "NAME=LO:HI:N" when `named`).
-Range parse_range(const std::string& flag, const std::string& text, bool named) {
-  Range r{"omega", 0, 0, 0};
-  std::string spec = text;
-  if (named) {
-    const auto eq = text.find('=');
-    if (eq != std::string::npos) r.name = text.substr(0, eq);
-    spec = eq == std::string::npos ? "" : text.substr(eq + 1);
-  }
-  std::istringstream is(spec);
-  char c1 = 0, c2 = 0;
-  std::string rest;
-  if (!(is >> r.lo >> c1 >> r.hi >> c2 >> r.n) || c1 != ':' || c2 != ':' || (is >> rest) ||
-      r.n < 1 || !std::isfinite(r.lo) || !std::isfinite(r.hi)) {
-    throw InputError(flag + ": expected " + (named ? "NAME=LO:HI:N" : "LO:HI:N") +
-                     " (two finite numbers and a count >= 1), found '" + text + "'");
-  }
-  if (named && r.name != "omega" && r.name != "lambda" && r.name != "A" && r.name != "B" &&
-      r.name != "C") {
-    throw InputError(flag + ": expected a parameter omega, lambda, A, B or C, found '" + r.name +
-                     "'");
-  }
-  return r;
-}
 
 std::optional<int> parse_axis(const std::optional<std::string>& axis) {
   if (!axis) return std::nullopt;
@@ -79,105 +58,65 @@ std::optional<int> spin_axis_of(const Model& model, const State& s) {
   return std::nullopt;
 }
 
-std::string verdict_text(const std::optional<bool>& v) {
-  return v ? (*v ? "stable" : "unstable") : "inconclusive";
+/// A number, or `missing` when the JSON value is null (never "null" in a human summary).
+std::string optional_text(const io::Json& v, const std::string& missing) {
+  return v.is_null() ? missing : format_number(v.get<double>());
 }
 
-io::Json optional_json(const std::optional<bool>& v) {
-  return v ? io::Json(*v) : io::Json(nullptr);
-}
-io::Json optional_json(const std::optional<double>& v) {
-  return v ? io::Json(*v) : io::Json(nullptr);
+Vec3 vec(const io::Json& v) { return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()}; }
+
+/// --equilibrium K: the K-th (1-based) isolated equilibrium of `newtop equilibria`, at rest.
+State listed_equilibrium(const io::Scenario& sc, int k) {
+  const EquilibriumSet set = find_equilibria(sc.model);
+  const int count = static_cast<int>(set.equilibria.size());
+  if (count == 0) {
+    throw InputError("--equilibrium: " + sc.source + " has no isolated equilibrium" +
+                     (set.every_orientation ? " (every orientation is an equilibrium)" : ""));
+  }
+  if (k < 1 || k > count) {
+    throw InputError("--equilibrium: expected 1 to " + std::to_string(count) +
+                     " (the equilibria listed by newtop equilibria), found " + std::to_string(k));
+  }
+  return state_from_omega(sc.model.body, Vec3::Zero(), set.equilibria[k - 1].gamma);
 }
 
-/// --scan-omega: the diagram along Ω, to CSV (--out) and JSON.
-io::Json omega_scan(const Model& model, int axis, const Range& r,
-                    const std::optional<std::string>& out) {
-  const auto points = scan_omega(model, axis, r.lo, r.hi, r.n);
-  std::unique_ptr<io::AtomicFile> file;
-  if (out) {
-    file = std::make_unique<io::AtomicFile>(*out);
-    file->stream() << "omega,max_real_part,linearly_stable,lyapunov_stable\n";
-  }
-  io::Json list = io::Json::array();
-  for (const auto& p : points) {
-    list.push_back({{"omega", p.omega},
-                    {"max_real_part", p.max_real_part},
-                    {"linearly_stable", p.linearly_stable},
-                    {"lyapunov_stable", optional_json(p.lyapunov_stable)}});
-    if (file) {
-      file->stream() << format_number(p.omega) << ',' << format_number(p.max_real_part) << ','
-                     << (p.linearly_stable ? "true" : "false") << ','
-                     << (p.lyapunov_stable ? (*p.lyapunov_stable ? "true" : "false") : "") << '\n';
-    }
-  }
-  if (file) file->commit();
-  return list;
-}
-
-/// One grid point of --scan: the model with the parameters replaced, or nullopt if unphysical.
-std::optional<Spectrum> grid_point(const Model& base, int axis, double omega0,
-                                   const std::vector<std::pair<std::string, double>>& values) {
-  Vec3 I = base.body.inertia();
-  double lambda = base.field.lambda_, w = omega0;
-  for (const auto& [name, v] : values) {
-    if (name == "omega") w = v;
-    if (name == "lambda") lambda = v;
-    if (name == "A") I.x() = v;
-    if (name == "B") I.y() = v;
-    if (name == "C") I.z() = v;
-  }
-  try {
-    const Model m{Body::from_principal(I, base.body.mass(), base.body.center_of_mass()),
-                  QuadraticField::coulomb(base.field.g, lambda)};
-    return spin_stability(m, axis, w);
-  } catch (const InputError&) {
-    return std::nullopt;  // e.g. the triangle inequality fails at this point of the grid
-  }
-}
-
-/// --scan P1=..,P2=..: the two-parameter diagram to CSV.
-void grid_scan(const Model& model, int axis, double omega0, const std::string& spec,
-               const std::string& out) {
-  const auto comma = spec.find(',');
-  if (comma == std::string::npos) {
-    throw InputError("--scan: expected P1=LO:HI:N,P2=LO:HI:M, found '" + spec + "'");
-  }
-  const Range r1 = parse_range("--scan", spec.substr(0, comma), true);
-  const Range r2 = parse_range("--scan", spec.substr(comma + 1), true);
-  io::AtomicFile file(out);
-  file.stream() << r1.name << ',' << r2.name << ",max_real_part,verdict\n";
-  for (int i = 0; i < r1.n; ++i) {
-    for (int k = 0; k < r2.n; ++k) {
-      const auto s = grid_point(model, axis, omega0, {{r1.name, r1.at(i)}, {r2.name, r2.at(k)}});
-      file.stream() << format_number(r1.at(i)) << ',' << format_number(r2.at(k)) << ','
-                    << (s ? format_number(s->max_real_part) : "") << ','
-                    << (s ? (s->linearly_stable ? "stable" : "unstable") : "nonphysical") << '\n';
-    }
-  }
-  file.commit();
-}
-
-/// The state to analyse and the spin axis (if the state is a spin about a principal axis).
-std::pair<State, std::optional<int>> chosen_state(const io::Scenario& sc, const StabilityArgs& a) {
+/// The state to analyse: --axis (exact), --equilibrium or [initial] (polished by Newton).
+Chosen chosen_state(const io::Scenario& sc, const StabilityArgs& a) {
   const std::optional<int> axis = parse_axis(a.axis);
   if (a.omega && !axis) throw InputError("--omega: needs --axis x|y|z to say which axis spins");
-  const State s = axis ? principal_spin(sc.model.body, *axis, a.omega.value_or(0.0)) : sc.initial;
-  const double res = fixed_point_residual(sc.model, s);
-  if (!(res <= kFixedPointTolerance)) {
-    throw InputError(std::string(axis ? "--axis " + *a.axis : sc.source + ": [initial]") +
-                     ": expected an equilibrium or a permanent rotation (relative residual of d(m, "
-                     "gamma)/dt <= " +
-                     format_number(kFixedPointTolerance) + "), found residual " +
-                     format_number(res) +
-                     (axis ? " (M g r0 is not along the axis)"
-                           : "; see newtop equilibria / rotations, or use --axis and --omega"));
+  if (a.equilibrium && axis) throw InputError("--equilibrium: give either --equilibrium or --axis");
+  if (axis) {
+    const State s = principal_spin(sc.model.body, *axis, a.omega.value_or(0.0));
+    const double res = fixed_point_residual(sc.model, s);
+    if (!(res <= kFixedPointTolerance)) {
+      throw InputError("--axis " + *a.axis + ": expected a permanent rotation, found residual " +
+                       format_number(res) + " of d(m, gamma)/dt (M g r0 is not along the axis)");
+    }
+    return {s, axis, polish_fixed_point(sc.model, s)};
   }
-  return {s, axis ? axis : spin_axis_of(sc.model, s)};
+  const State given = a.equilibrium ? listed_equilibrium(sc, *a.equilibrium) : sc.initial;
+  const PolishedFixedPoint p = polish_fixed_point(sc.model, given);
+  if (!p.converged) {
+    throw InputError(
+        (a.equilibrium ? "--equilibrium " + std::to_string(*a.equilibrium)
+                       : sc.source + ": [initial]") +
+        ": expected an equilibrium or a permanent rotation (to " +
+        "three digits or more), found residual " + format_number(p.residual_given) +
+        " of d(m, gamma)/dt, and " +
+        (p.iterations == 0 ? std::string("Newton's method finds no fixed point near it")
+         : p.correction > kPolishRadius
+             ? "the fixed point Newton's method finds is " + format_number(p.correction) +
+                   " away (more than " + format_number(kPolishRadius) + ")"
+             : "Newton's method stops at residual " + format_number(p.residual)) +
+        "; see newtop equilibria (and --equilibrium K) / rotations, or use --axis and --omega");
+  }
+  return {p.state, spin_axis_of(sc.model, p.state), p};
 }
 
-io::Json report(const io::Scenario& sc, const State& s, std::optional<int> axis) {
+io::Json report(const io::Scenario& sc, const Chosen& c) {
   const Model& m = sc.model;
+  const State& s = c.state;
+  const std::optional<int> axis = c.axis;
   const Spectrum sp = linear_stability(m, s);
   io::Json j;
   j["eigenvalues"] = io::Json::array();
@@ -195,58 +134,106 @@ io::Json report(const io::Scenario& sc, const State& s, std::optional<int> axis)
   j["omega"] = io::to_json(omega(m.body, s));
   j["gamma"] = io::to_json(s.gamma);
   j["residual"] = fixed_point_residual(m, s);
+  j["polish"] = {{"residual_given", c.polish.residual_given},
+                 {"correction", c.polish.correction},
+                 {"iterations", c.polish.iterations}};
   return j;
 }
 
+std::string complex_text(const io::Json& z) {
+  const double im = z[1].get<double>();
+  return format_number(z[0].get<double>()) + (im < 0 ? "-" : "+") + format_number(std::abs(im)) +
+         "i";
+}
+
 void print_report(std::ostream& os, const io::Json& j) {
-  os << "state     omega = " << j["omega"].dump() << "  gamma = " << j["gamma"].dump()
-     << "  (fixed-point residual " << format_number(j["residual"].get<double>()) << ")\n";
+  const io::Json& p = j["polish"];
+  if (p["iterations"].get<int>() > 0) {
+    os << "polished  by Newton's method: correction "
+       << format_number(p["correction"].get<double>()) << " (residual "
+       << format_number(p["residual_given"].get<double>()) << " -> "
+       << format_number(j["residual"].get<double>()) << " in " << p["iterations"].get<int>()
+       << (p["iterations"].get<int>() == 1 ? " step" : " steps") << ")\n";
+  }
+  os << "state     omega = " << format_vector(vec(j["omega"]))
+     << "  gamma = " << format_vector(vec(j["gamma"])) << "  (fixed-point residual "
+     << format_number(j["residual"].get<double>()) << ")\n";
   os << "eigenvalues on the symplectic leaf:";
-  for (const auto& z : j["eigenvalues"])
-    os << "  " << z[0].get<double>() << (z[1].get<double>() < 0 ? "" : "+") << z[1].get<double>()
-       << "i";
+  for (const auto& z : j["eigenvalues"]) os << "  " << complex_text(z);
   os << "\nmax real part " << format_number(j["max_real_part"].get<double>())
      << "\nlinear (spectral) stability: "
      << (j["linearly_stable"].get<bool>() ? "stable" : "unstable")
-     << "\nLyapunov (energy-Casimir): "
-     << verdict_text(j["lyapunov_stable"].is_null()
-                         ? std::nullopt
-                         : std::optional<bool>(j["lyapunov_stable"].get<bool>()))
+     << "\nLyapunov (energy-Casimir): " << verdict_text(optional_bool(j["lyapunov_stable"]))
      << "\n";
   if (!j["axis"].is_null()) {
     os << "spin axis " << j["axis"].get<std::string>() << " (" << j["axis_class"].get<std::string>()
-       << " moment); threshold Omega: formula " << j["threshold_omega_formula"].dump()
-       << ", numeric " << j["threshold_omega_numeric"].dump() << "\n";
+       << " moment); threshold Omega: formula "
+       << optional_text(j["threshold_omega_formula"],
+                        "not applicable (largest-moment axis, r0 = 0, lambda > 0 only)")
+       << ", numeric "
+       << optional_text(j["threshold_omega_numeric"], "none (no unstable-to-stable change)")
+       << "\n";
   }
 }
 
 int run(const StabilityArgs& a) {
+  if (a.diagram) {
+    if (!a.scenario.empty() || a.axis || a.omega || a.scan_omega || a.equilibrium) {
+      throw InputError(
+          "--diagram: takes no scenario, --axis, --omega, --equilibrium or --scan-omega (only "
+          "--scan, "
+          "--out, --json)");
+    }
+    return stability_diagram(*a.diagram, a.scan, a.out, a.json);
+  }
+  if (a.scenario.empty())
+    throw InputError("scenario: missing: give a scenario file (or --diagram)");
+  if (io::is_orbit_scenario(a.scenario)) {
+    if (a.axis || a.omega || a.scan_omega || a.scan || a.out || a.equilibrium) {
+      throw InputError(
+          "--axis, --omega, --scan-omega, --scan, --out, --equilibrium: not available on an orbit "
+          "scenario (its initial state must be a relative equilibrium)");
+    }
+    return orbit_stability(a.scenario, a.json);
+  }
+  // Every option is checked before any work is done.
+  if (a.scan && a.scan_omega) {
+    throw InputError("--scan: give either --scan or --scan-omega, not both");
+  }
+  if (a.scan && !a.out) throw InputError("--scan: needs --out FILE for the CSV diagram");
+  if (a.out && !a.scan && !a.scan_omega) {
+    throw InputError("--out: needs --scan-omega or --scan (the diagram it holds)");
+  }
+  const std::optional<Range> omega_range =
+      a.scan_omega ? std::optional(parse_range("--scan-omega", *a.scan_omega, false))
+                   : std::nullopt;
+  const std::optional<std::pair<Range, Range>> grid =
+      a.scan ? std::optional(parse_grid(*a.scan)) : std::nullopt;
   const io::Scenario sc = io::load_scenario(a.scenario);
-  const auto [s, axis] = chosen_state(sc, a);
-  io::Json j = report(sc, s, axis);
-  if ((a.scan_omega || a.scan) && !axis) {
+  const Chosen c = chosen_state(sc, a);
+  if ((a.scan_omega || a.scan) && !c.axis) {
     throw InputError(
         std::string(a.scan ? "--scan" : "--scan-omega") +
         ": needs a spin about a principal axis: give --axis x|y|z (with M g r0 along it)");
   }
-  if (a.scan && a.scan_omega)
-    throw InputError("--scan: give either --scan or --scan-omega, not both");
-  if (a.scan && !a.out) throw InputError("--scan: needs --out FILE for the CSV diagram");
-  if (a.scan_omega) {
-    j["scan"] =
-        omega_scan(sc.model, *axis, parse_range("--scan-omega", *a.scan_omega, false), a.out);
-  } else if (a.scan) {
-    grid_scan(sc.model, *axis, a.omega.value_or(0.0), *a.scan, *a.out);
-  }
+  // The diagram's file is created (and checked against the inputs) before any work.
+  std::unique_ptr<io::AtomicFile> file;
+  if (a.out) file = std::make_unique<io::AtomicFile>(*a.out, sc.input_files);
+  io::Json j = report(sc, c);
+  if (a.equilibrium) j["equilibrium"] = *a.equilibrium;
+  if (omega_range) j["scan"] = omega_scan(sc.model, *c.axis, *omega_range, file.get());
+  if (grid) grid_scan(sc.model, *c.axis, a.omega.value_or(0.0), *grid, *file);
   if (a.out) j["csv"] = *a.out;
   j["model"] = model_json(sc.model);
   if (a.json) {
-    std::cout << j.dump(2) << '\n';
+    print_json(std::cout, j);
     return kExitOk;
   }
   std::cout << "newtop stability " << sc.source << "\n";
   print_model(std::cout, sc.model);
+  if (a.equilibrium) std::cout << "equilibrium " << *a.equilibrium << " of newtop equilibria\n";
   print_report(std::cout, j);
+  if (omega_range) print_omega_scan(std::cout, j["scan"]);
   if (a.out) std::cout << "diagram written to " << *a.out << "\n";
   return kExitOk;
 }
@@ -256,15 +243,20 @@ const RegisterCommand reg{Command{
     "Linear and energy-Casimir stability of an equilibrium or permanent rotation; diagrams",
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<StabilityArgs>();
-      sub.add_option("scenario", a->scenario, "scenario file (TOML)")->required();
+      sub.add_option("scenario", a->scenario, "scenario file (TOML); none with --diagram");
       sub.add_option("--axis", a->axis,
                      "analyse the spin about this principal axis (x, y or z), "
                      "pointing at the centre, instead of the initial state");
       sub.add_option("--omega", a->omega, "spin rate Omega about --axis (default 0)");
+      sub.add_option("--equilibrium", a->equilibrium,
+                     "analyse the K-th equilibrium listed by newtop equilibria (K = 1, 2, ...)");
       sub.add_option("--scan-omega", a->scan_omega, "W1:W2:N: stability along Omega (JSON, CSV)");
       sub.add_option("--scan", a->scan,
                      "P1=LO:HI:N,P2=LO:HI:M with P in omega, lambda, A, B, C: 2-D diagram to CSV");
-      sub.add_option("--out", a->out, "CSV file for --scan-omega or --scan");
+      sub.add_option("--out", a->out, "CSV file for --scan-omega, --scan or --diagram");
+      sub.add_option("--diagram", a->diagram,
+                     "debra-delp: the DeBra-Delp diagram of a gravity-gradient satellite over "
+                     "--scan k_R=LO:HI:N,k_Y=LO:HI:M (default -0.99:0.99:67 each)");
       sub.add_flag("--json", a->json, "print one JSON object");
       return [a] { return run(*a); };
     }}};

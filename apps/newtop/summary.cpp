@@ -7,6 +7,7 @@ namespace newtop::app {
 namespace {
 
 std::string fmt(double x, int digits = 16) {
+  if (x == 0.0) x = 0.0;  // −0 is printed as 0
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*g", digits, x);
   return buf;
@@ -16,7 +17,21 @@ std::string fmt(const Vec3& v, int digits = 16) {
   return "[" + fmt(v.x(), digits) + ", " + fmt(v.y(), digits) + ", " + fmt(v.z(), digits) + "]";
 }
 
+/// Replaces every −0 in j by 0.
+void clear_negative_zeros(io::Json& j) {
+  if (j.is_structured()) {
+    for (auto& v : j) clear_negative_zeros(v);
+  } else if (j.is_number_float() && j.get<double>() == 0.0) {
+    j = 0.0;
+  }
+}
+
 }  // namespace
+
+void print_json(std::ostream& os, io::Json j) {
+  clear_negative_zeros(j);
+  os << j.dump(2) << '\n';
+}
 
 io::Json model_json(const Model& m) {
   io::Json j;
@@ -29,6 +44,7 @@ io::Json model_json(const Model& m) {
       io::Json::array({io::to_json(P.col(0)), io::to_json(P.col(1)), io::to_json(P.col(2))});
   j["g"] = m.field.g;
   j["lambda"] = m.field.lambda_;
+  clear_negative_zeros(j);  // also for the subcommands that dump their JSON themselves
   return j;
 }
 
@@ -42,6 +58,13 @@ void print_model(std::ostream& os, const Model& m) {
        << "  y' = " << fmt(Vec3(P.col(1)), 6) << "  z' = " << fmt(Vec3(P.col(2)), 6) << "\n";
   }
   os << "field     g = " << fmt(m.field.g) << "   lambda = " << fmt(m.field.lambda_) << "\n";
+}
+
+std::string CasimirCheck::warning() const {
+  return "the Casimirs drifted by |d(gamma.gamma)|/gamma.gamma = " + fmt(geometric, 3) +
+         " and |d(m.gamma)|/max|m| = " + fmt(area, 3) + ", beyond " + fmt(kThreshold, 3) +
+         ": the state is wrong by at least half that (relative); tighten the tolerance or the "
+         "step";
 }
 
 io::Json simulation_json(const SimulationReport& r) {
@@ -65,9 +88,16 @@ io::Json simulation_json(const SimulationReport& r) {
   j["integrals"] = {{"initial", io::to_json(r.initial)},
                     {"final", io::to_json(r.final_values)},
                     {"max_abs_drift", io::to_json(r.max_drift)}};
+  j["casimir_drift"] = {{"geometric", r.casimir.geometric},
+                        {"area", r.casimir.area},
+                        {"threshold", CasimirCheck::kThreshold},
+                        {"exceeded", r.casimir.exceeded()}};
+  j["warnings"] = io::Json::array();
+  if (r.casimir.exceeded()) j["warnings"].push_back(r.casimir.warning());
   j["conserved"] = conserved_integrals(r.scenario.model);
   j["model"] = model_json(r.scenario.model);
   if (r.csv_path) j["csv"] = *r.csv_path;
+  clear_negative_zeros(j);
   return j;
 }
 
@@ -75,6 +105,7 @@ void print_simulation_summary(std::ostream& os, const SimulationReport& r) {
   const Outcome& o = r.outcome;
   os << "newtop simulate " << r.scenario.source << "\n";
   print_model(os, r.scenario.model);
+  if (!r.field_line.empty()) os << "field     " << r.field_line << "\n";
   os << "method    " << r.method.name;
   if (method_info(r.method.name).kind == MethodKind::adaptive) {
     os << "  tol = " << fmt(r.method.abs_tol, 3);

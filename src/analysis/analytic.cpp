@@ -22,19 +22,26 @@ std::string to_string(AnalyticKind k) {
 
 AnalyticDetection detect_analytic_case(const Model& model, const State& x0) {
   if (euler_poinsot_holds(model)) {
-    return {AnalyticKind::euler_poinsot, "free body: lambda = 0, M g r0 = 0, k = 0"};
+    return {AnalyticKind::euler_poinsot, "free body: lambda = 0, M g r0 = 0, k = 0", true};
   }
   std::string why_not_plane;
   if (pendulum_holds(model, x0, &why_not_plane)) {
-    return {AnalyticKind::pendulum, "plane motion: z0 = 0, k1 = k2 = 0, p = q = gamma3 = 0"};
+    return {AnalyticKind::pendulum, "plane motion: z0 = 0, k1 = k2 = 0, p = q = gamma3 = 0", true};
   }
   if (lagrange_case_holds(model)) {
-    return {AnalyticKind::lagrange, "Lagrange-like case: A = B, x0 = y0 = 0, k1 = k2 = 0"};
+    return {AnalyticKind::lagrange, "Lagrange-like case: A = B, x0 = y0 = 0, k1 = k2 = 0", true};
   }
   if (brun_holds(model)) {
+    if (brun_level_solvable(model, x0)) {
+      return {AnalyticKind::brun,
+              "Brun's case (r0 = 0, k = 0) on the level f = m.gamma = 0: sphero-conic "
+              "separation (Weber, Kharlamova), genus-2 Abel-Jacobi inversion",
+              true};
+    }
     return {AnalyticKind::brun,
-            "Brun's case (r0 = 0, k = 0): integrable, but its sphero-conic quadratures "
-            "(Kharlamova) are not implemented"};
+            "Brun's case (r0 = 0, k = 0): integrable, but only the level f = m.gamma = 0 is "
+            "solved; f != 0 needs Koetter's separation, not implemented (the spectral curve "
+            "of the level is reported)"};
   }
   return {AnalyticKind::none,
           "no integrable case: not a free body (lambda or M g r0 nonzero), not a plane motion (" +
@@ -52,6 +59,7 @@ AnalyticSolution analytic_solution(const Model& model, const State& x0, Analytic
     case AnalyticKind::lagrange:
       return lagrange_case(model, x0);
     case AnalyticKind::brun:
+      return brun_case(model, x0);
     case AnalyticKind::none:
       break;
   }
@@ -64,6 +72,7 @@ State analytic_state(const AnalyticSolution& s, double t) {
     State operator()(const EulerPoinsot& e) const { return free_body_state(e, t); }
     State operator()(const Pendulum& p) const { return pendulum_state(p, t); }
     State operator()(const LagrangeCase& l) const { return lagrange_state(l, t); }
+    State operator()(const BrunCase& b) const { return brun_state(b, t); }
   };
   return std::visit(Visitor{t}, s);
 }

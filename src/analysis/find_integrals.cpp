@@ -159,6 +159,14 @@ IntegralSearch search(const VectorField& field, const std::vector<Candidate>& ba
   s.monomials = monomials_up_to(opt.degree);
   const auto n = static_cast<Eigen::Index>(s.monomials.size());
   const int npts = opt.points > 0 ? opt.points : 3 * static_cast<int>(n);
+  const std::int64_t max_points = kMaxConditionEntries / n;
+  if (npts > max_points) {
+    throw InputError("points: expected at most " + std::to_string(max_points) + " for degree " +
+                     std::to_string(opt.degree) + " (the condition matrix of points x " +
+                     std::to_string(n) + " monomials is bounded at " +
+                     std::to_string(kMaxConditionEntries) + " entries, 128 MiB), found " +
+                     std::to_string(npts));
+  }
   if (npts < n) {
     throw InputError("points: expected at least " + std::to_string(n) +
                      " (the number of "

@@ -92,8 +92,10 @@ RotationFamilies permanent_rotations(const Model& model, int samples) {
         "0]; found k = " +
         format_vector(model.body.gyrostat()));
   }
-  if (samples < 2) {
-    throw InputError("samples: expected an integer >= 2, found " + std::to_string(samples));
+  if (samples < 2 || samples > kMaxRotationSamples) {
+    throw InputError("samples: expected an integer from 2 to " +
+                     std::to_string(kMaxRotationSamples) +
+                     " (samples per curve of the cone), found " + std::to_string(samples));
   }
   RotationFamilies out;
   const Vec3 b = linear_term(model);

@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 
@@ -19,7 +20,70 @@ double spin_rate(const Model& model, const State& s) {
   return omega(model.body, s).dot(s.gamma) / s.gamma.squaredNorm();
 }
 
+// Newton steps of polish_fixed_point; quadratic convergence from 1e-3 needs about 5.
+constexpr int kPolishIterations = 50;
+// Singular values of the scaled Newton matrix below this fraction of the largest are treated as
+// zero: the fixed points of a family (Ω along the spin, the cone) make it singular at the
+// solution, and the least-norm step leaves such directions alone. Far above eps (round-off in
+// a matrix of size ~1), far below the O(1) singular values of a non-degenerate fixed point.
+constexpr double kPolishRank = 1e-10;
+
+/// Distance from the fixed points that Newton reduces: the residual plus ||γ| − 1|.
+double polish_merit(const Model& model, const State& s) {
+  return fixed_point_residual(model, s) + std::abs(s.gamma.norm() - 1.0);
+}
+
+/// One least-norm Newton step for F = (rhs_m / scale_m, rhs_γ / scale_g, ½(|γ|² − 1)) = 0 in the
+/// unknowns (m / m_scale, γ), or in γ alone at rest (ω = 0 kept, rhs_γ = 0 there).
+State newton_step(const Model& model, const State& s, bool at_rest, double m_scale, double scale_m,
+                  double scale_g) {
+  const State f = rhs(model, s);
+  const Mat6 J = jacobian(model, s);
+  Eigen::Matrix<double, 7, 6> D = Eigen::Matrix<double, 7, 6>::Zero();
+  Eigen::Matrix<double, 7, 1> F = Eigen::Matrix<double, 7, 1>::Zero();
+  D.topRows<3>() = J.topRows<3>() / scale_m;
+  F.head<3>() = f.m / scale_m;
+  if (!at_rest) {
+    D.middleRows<3>(3) = J.bottomRows<3>() / scale_g;
+    F.segment<3>(3) = f.gamma / scale_g;
+  }
+  D.leftCols<3>() *= m_scale;
+  D.block<1, 3>(6, 3) = s.gamma.transpose();
+  F[6] = 0.5 * (s.gamma.squaredNorm() - 1.0);
+  if (at_rest) D.leftCols<3>().setZero();  // m = k stays: only γ moves
+  Eigen::JacobiSVD<Eigen::Matrix<double, 7, 6>> svd(D, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  svd.setThreshold(kPolishRank);
+  const Eigen::Matrix<double, 6, 1> dx = svd.solve(F);
+  return {s.m - m_scale * dx.head<3>(), s.gamma - dx.tail<3>()};
+}
+
 }  // namespace
+
+PolishedFixedPoint polish_fixed_point(const Model& model, const State& s) {
+  PolishedFixedPoint out;
+  out.state = s;
+  out.residual_given = out.residual = fixed_point_residual(model, s);
+  const Vec3 w = omega(model.body, s);
+  const bool at_rest = w.isZero(0.0);
+  const double m_scale = at_rest ? 1.0 : s.m.norm();
+  // Row scales of the residual, fixed at the given state (as in fixed_point_residual).
+  const double scale_m = s.m.norm() * w.norm() + grad_gamma(model, s.gamma).norm();
+  const double scale_g = at_rest ? 1.0 : w.norm();
+  double merit = polish_merit(model, s);
+  for (int it = 0; it < kPolishIterations && merit > 0.0 && scale_m > 0.0; ++it) {
+    const State next = newton_step(model, out.state, at_rest, m_scale, scale_m, scale_g);
+    const double next_merit = polish_merit(model, next);
+    if (!(next_merit < merit)) break;  // converged to round-off (or diverging): keep the best
+    out.state = next;
+    merit = next_merit;
+    out.iterations = it + 1;
+  }
+  out.residual = fixed_point_residual(model, out.state);
+  out.correction = (out.state.gamma - s.gamma).norm();
+  if (!at_rest) out.correction = std::max(out.correction, (out.state.m - s.m).norm() / m_scale);
+  out.converged = out.residual <= kFixedPointTolerance && out.correction <= kPolishRadius;
+  return out;
+}
 
 Mat6 jacobian(const Model& model, const State& s) {
   const Vec3 w = omega(model.body, s);

@@ -114,7 +114,14 @@ std::optional<double> numeric_threshold(const Model& model, int axis, int sample
 }
 
 std::vector<ScanPoint> scan_omega(const Model& model, int axis, double w1, double w2, int n) {
-  if (n < 1) throw InputError("scan: expected at least 1 point, found " + std::to_string(n));
+  if (n < 1 || n > kMaxScanPoints) {
+    throw InputError("scan: expected 1 to " + std::to_string(kMaxScanPoints) + " points, found " +
+                     std::to_string(n));
+  }
+  if (!std::isfinite(w1) || !std::isfinite(w2)) {
+    throw InputError("scan: expected finite ends of the Omega range, found " + format_number(w1) +
+                     ", " + format_number(w2));
+  }
   std::vector<ScanPoint> out;
   out.reserve(static_cast<std::size_t>(n));
   for (int k = 0; k < n; ++k) {

@@ -1,123 +1,70 @@
+// Multipole series of the exact field (spec §3): Taylor coefficients of 1/|x|, the sums over the
+// mass moments with their first and second derivatives, and MultipoleField. The series are summed
+// for the body scaled by its radius r (ỹ = y/r, M̃_α = M_α / r^|α|), every term then of size
+// M (r/R)^(n+1), and the powers of r applied at the end.
+
 #include "newtop/exact/multipole.hpp"
 
 #include <cmath>
-#include <numbers>
 #include <string>
+
+#include "detail.hpp"
+#include "table.hpp"
 
 namespace newtop {
 namespace {
+
+using detail::cross_matrix;
+using detail::Table;
 
 // Orders above this gain nothing in double precision for a centre outside the body and make
 // the (degree+1)³ tables needlessly large.
 constexpr int kMaxOrder = 30;
 
-/// Dense (d+1)³ table, zero where i + j + k > d.
-struct Table {
-  int d;
-  std::vector<double> v;
-  explicit Table(int degree)
-      : d(degree), v(static_cast<std::size_t>((degree + 1) * (degree + 1) * (degree + 1)), 0.0) {}
-  double& operator()(int i, int j, int k) {
-    return v[(static_cast<std::size_t>(i) * (d + 1) + j) * (d + 1) + k];
-  }
-  double at(int i, int j, int k) const {
-    if (i < 0 || j < 0 || k < 0) return 0.0;
-    return v[(static_cast<std::size_t>(i) * (d + 1) + j) * (d + 1) + k];
-  }
+/// S(ỹ) = Σ_{|α| < order} M̃_α c̃_α(ỹ) and its derivatives in ỹ, all terms and those with |α| ≥ 1
+/// (`*_rest`: the monopole's gradient is parallel to ỹ and gives no moment), and the first omitted
+/// degree (`next`, where the moments reach it).
+struct Sums {
+  double V = 0.0, next = 0.0;
+  Vec3 grad = Vec3::Zero(), grad_rest = Vec3::Zero();
+  Mat3 hess = Mat3::Zero(), hess_rest = Mat3::Zero();
 };
 
-/// Y ← Y / (1 − ℓ·h) truncated at degree d: Y_α += Σ_j ℓ_j Y_{α−e_j} in increasing α.
-void divide_by_one_minus(Table& Y, const Vec3& l) {
-  for (int i = 0; i <= Y.d; ++i) {
-    for (int j = 0; i + j <= Y.d; ++j) {
-      for (int k = 0; i + j + k <= Y.d; ++k) {
-        Y(i, j, k) +=
-            l.x() * Y.at(i - 1, j, k) + l.y() * Y.at(i, j - 1, k) + l.z() * Y.at(i, j, k - 1);
-      }
-    }
-  }
-}
-
-double factorial(int n) { return std::tgamma(n + 1.0); }
-
-/// Polyhedron: tetrahedra (O, a, b, c) with ∫_T (h·ρ)^n dV = det n!/(n+3)! h_n(h·a, h·b, h·c), h_n
-/// the complete homogeneous symmetric polynomial, so M_α = σ Σ det α!/(|α|+3)! [h^α] Π 1/(1 − h·v).
-void add_polyhedron(const Polyhedron& p, Table& M) {
-  Table Y(M.d);
-  for (const Triangle& t : p.faces()) {
-    std::fill(Y.v.begin(), Y.v.end(), 0.0);
-    Y(0, 0, 0) = 1.0;
-    for (int c = 0; c < 3; ++c) divide_by_one_minus(Y, p.vertices()[t[c]]);
-    const Vec3 &a = p.vertices()[t[0]], &b = p.vertices()[t[1]], &c = p.vertices()[t[2]];
-    const double det = a.dot(b.cross(c));
-    for (std::size_t n = 0; n < Y.v.size(); ++n) M.v[n] += det * Y.v[n];
-  }
-  for (int i = 0; i <= M.d; ++i) {
-    for (int j = 0; i + j <= M.d; ++j) {
-      for (int k = 0; i + j + k <= M.d; ++k) {
-        M(i, j, k) *=
-            p.density() * factorial(i) * factorial(j) * factorial(k) / factorial(i + j + k + 3);
-      }
-    }
-  }
-}
-
-/// ∫_{|u| ≤ 1} u^β du: zero unless every β_i is even; for β = 2k it is
-/// 2 Γ(k1+½) Γ(k2+½) Γ(k3+½) / (Γ(|k| + 3/2) (2|k| + 3)).
-double ball_moment(int b1, int b2, int b3) {
-  if (b1 % 2 || b2 % 2 || b3 % 2) return 0.0;
-  const double k1 = b1 / 2, k2 = b2 / 2, k3 = b3 / 2, k = k1 + k2 + k3;
-  return 2.0 * std::tgamma(k1 + 0.5) * std::tgamma(k2 + 0.5) * std::tgamma(k3 + 0.5) /
-         (std::tgamma(k + 1.5) * (2.0 * k + 3.0));
-}
-
-double binomial(int n, int k) { return factorial(n) / (factorial(k) * factorial(n - k)); }
-
-/// Ellipsoid ρ = c + diag(a) u over the unit ball: binomial expansion per axis.
-void add_ellipsoid(const Ellipsoid& e, Table& M) {
-  const Vec3 &a = e.semi_axes, &c = e.center;
-  const double w = e.density * a.prod();
-  auto term = [&](int axis, int n, int b) {
-    return binomial(n, b) * std::pow(c[axis], n - b) * std::pow(a[axis], b);
-  };
-  for (int i = 0; i <= M.d; ++i)
-    for (int j = 0; i + j <= M.d; ++j)
-      for (int k = 0; i + j + k <= M.d; ++k) {
-        double s = 0.0;
-        for (int p = 0; p <= i; p += 2)
-          for (int q = 0; q <= j; q += 2)
-            for (int r = 0; r <= k; r += 2)
-              s += term(0, i, p) * term(1, j, q) * term(2, k, r) * ball_moment(p, q, r);
-        M(i, j, k) = w * s;
-      }
-}
-
-void add_points(const PointMasses& pm, Table& M) {
-  for (std::size_t n = 0; n < pm.masses().size(); ++n) {
-    const Vec3& x = pm.positions()[n];
-    for (int i = 0; i <= M.d; ++i)
-      for (int j = 0; i + j <= M.d; ++j)
-        for (int k = 0; i + j + k <= M.d; ++k) {
-          M(i, j, k) +=
-              pm.masses()[n] * std::pow(x.x(), i) * std::pow(x.y(), j) * std::pow(x.z(), k);
+Sums sums(const MassMoments& M, int order, const Vec3& y, bool hessian) {
+  const int d = order + (hessian ? 1 : 0);
+  Table c(d);
+  c.v = inverse_distance_taylor(y, d);
+  Sums s;
+  for (int i = 0; i <= order; ++i)
+    for (int j = 0; i + j <= order; ++j)
+      for (int k = 0; i + j + k <= order; ++k) {
+        if (i + j + k > M.degree()) continue;
+        const double m = M.scaled(i, j, k);
+        if (i + j + k == order) {
+          s.next += m * c(i, j, k);
+          continue;
         }
-  }
+        s.V += m * c(i, j, k);
+        const Vec3 g =
+            m * Vec3((i + 1) * c(i + 1, j, k), (j + 1) * c(i, j + 1, k), (k + 1) * c(i, j, k + 1));
+        s.grad += g;
+        if (i + j + k > 0) s.grad_rest += g;
+        if (!hessian) continue;
+        const double a[3] = {i + 1.0, j + 1.0, k + 1.0};
+        Mat3 h;
+        h(0, 0) = a[0] * (i + 2) * c(i + 2, j, k);
+        h(1, 1) = a[1] * (j + 2) * c(i, j + 2, k);
+        h(2, 2) = a[2] * (k + 2) * c(i, j, k + 2);
+        h(0, 1) = h(1, 0) = a[0] * a[1] * c(i + 1, j + 1, k);
+        h(0, 2) = h(2, 0) = a[0] * a[2] * c(i + 1, j, k + 1);
+        h(1, 2) = h(2, 1) = a[1] * a[2] * c(i, j + 1, k + 1);
+        s.hess += m * h;
+        if (i + j + k > 0) s.hess_rest += m * h;
+      }
+  return s;
 }
 
 }  // namespace
-
-MassMoments::MassMoments(const MassModel& model, int degree)
-    : degree_(degree), max_radius_(newtop::max_radius(model)) {
-  Table M(degree);
-  struct Visitor {
-    Table& M;
-    void operator()(const PointMasses& p) const { add_points(p, M); }
-    void operator()(const Polyhedron& p) const { add_polyhedron(p, M); }
-    void operator()(const Ellipsoid& e) const { add_ellipsoid(e, M); }
-  };
-  std::visit(Visitor{M}, model);
-  m_ = std::move(M.v);
-}
 
 std::vector<double> inverse_distance_taylor(const Vec3& x, int degree) {
   Table c(degree);
@@ -137,74 +84,35 @@ std::vector<double> inverse_distance_taylor(const Vec3& x, int degree) {
   return std::move(c.v);
 }
 
+// Φ(x) = S(−x/r)/r, ∇Φ = −∇S/r², ∇∇Φ = ∇∇S/r³ (derivatives of S in ỹ = −x/r), moment
+// ∇Φ' × x = ∇S' × ỹ / r (Φ' without the monopole), its Jacobian (−[∇S']× + [ỹ]× ∇∇S')/r².
+Attraction multipole_attraction(const MassMoments& M, int order, const Vec3& x) {
+  const double r = M.scale();
+  const Vec3 y = -x / r;
+  const Sums s = sums(M, order, y, false);
+  return {s.V / r, -s.grad / r / r, s.grad_rest.cross(y) / r};
+}
+
+GravityGradient multipole_gravity_gradient(const MassMoments& M, int order, const Vec3& x) {
+  const double r = M.scale();
+  const Vec3 y = -x / r;
+  const Sums s = sums(M, order, y, true);
+  return {s.hess / r / r / r, (cross_matrix(y) * s.hess_rest - cross_matrix(s.grad_rest)) / r / r};
+}
+
 MultipoleField MultipoleField::make(const MassModel& model, int order, double mu, double R,
                                     const Mat3& axes) {
   if (order < 1 || order > kMaxOrder) {
     throw InputError("order: expected an integer in [1, " + std::to_string(kMaxOrder) +
                      "], found " + std::to_string(order));
   }
-  const ExactField checked =
-      ExactField::make(std::make_shared<const MassModel>(model), mu, R, axes);
-  return {std::make_shared<const MassMoments>(model, order), order, checked.mu, checked.R, axes};
-}
-
-namespace {
-
-struct Sums {
-  double V = 0.0, next = 0.0;
-  Vec3 grad_x = Vec3::Zero();  // ∇_x of Σ M_α c_α(x)
-};
-
-Sums sums(const MultipoleField& f, const Vec3& x) {
-  const int p = f.order, d = p;
-  const std::vector<double> c = inverse_distance_taylor(x, d);
-  auto C = [&](int i, int j, int k) {
-    return c[(static_cast<std::size_t>(i) * (d + 1) + j) * (d + 1) + k];
-  };
-  const MassMoments& M = *f.moments;
-  Sums s;
-  for (int i = 0; i <= p; ++i)
-    for (int j = 0; i + j <= p; ++j)
-      for (int k = 0; i + j + k <= p; ++k) {
-        const double m = M(i, j, k);
-        if (i + j + k == p) {
-          s.next += m * C(i, j, k);
-          continue;
-        }
-        s.V += m * C(i, j, k);
-        s.grad_x +=
-            m * Vec3((i + 1) * C(i + 1, j, k), (j + 1) * C(i, j + 1, k), (k + 1) * C(i, j, k + 1));
-      }
-  return s;
-}
-
-}  // namespace
-
-Attraction multipole_attraction(const MassMoments& M, int order, const Vec3& x) {
-  const int d = order;
-  const std::vector<double> c = inverse_distance_taylor(-x, d);
-  auto C = [&](int i, int j, int k) {
-    return c[(static_cast<std::size_t>(i) * (d + 1) + j) * (d + 1) + k];
-  };
-  Attraction a;
-  Vec3 grad_c = Vec3::Zero();  // ∇ of Σ M_α c_α at −x
-  for (int i = 0; i < order; ++i)
-    for (int j = 0; i + j < order; ++j)
-      for (int k = 0; i + j + k < order; ++k) {
-        const double m = M(i, j, k);
-        a.potential += m * C(i, j, k);
-        grad_c +=
-            m * Vec3((i + 1) * C(i + 1, j, k), (j + 1) * C(i, j + 1, k), (k + 1) * C(i, j, k + 1));
-      }
-  a.gradient = -grad_c;
-  return a;
+  check_field(model, mu, R);
+  return {std::make_shared<const MassMoments>(model, order), order, mu, R, axes};
 }
 
 FieldValues field_values(const MultipoleField& f, const Vec3& gamma) {
-  const Vec3 gm = f.axes * gamma;
-  const Sums s = sums(f, f.R * gm);
-  return complete(-f.mu * s.V, -f.mu * f.R * (f.axes.transpose() * s.grad_x),
-                  -f.mu * gm.dot(s.grad_x), gamma, f.R);
+  return field_values_at(multipole_attraction(*f.moments, f.order, -f.R * (f.axes * gamma)), f.mu,
+                         f.R, f.axes, gamma);
 }
 
 double potential(const Body& /*body*/, const MultipoleField& f, const Vec3& gamma) {
@@ -215,10 +123,28 @@ Vec3 grad_gamma(const Body& /*body*/, const MultipoleField& f, const Vec3& gamma
   return field_values(f, gamma).grad_gamma;
 }
 
+Vec3 moment(const Body& /*body*/, const MultipoleField& f, const Vec3& gamma) {
+  return field_values(f, gamma).moment;
+}
+
+Mat3 hessian_gamma(const Body& /*body*/, const MultipoleField& f, const Vec3& gamma) {
+  const GravityGradient g =
+      multipole_gravity_gradient(*f.moments, f.order, -f.R * (f.axes * gamma));
+  return -f.mu * (f.R * (f.R * (f.axes.transpose() * g.tensor * f.axes)));
+}
+
+Mat3 moment_jacobian(const Body& /*body*/, const MultipoleField& f, const Vec3& gamma) {
+  const GravityGradient g =
+      multipole_gravity_gradient(*f.moments, f.order, -f.R * (f.axes * gamma));
+  return -f.mu * (f.R * (f.axes.transpose() * g.moment_jacobian * f.axes));
+}
+
 TruncationError truncation_error(const MultipoleField& f, const Vec3& gamma) {
-  const Sums s = sums(f, f.R * (f.axes * gamma));
-  const double r = f.moments->max_radius(), M = f.moments->mass();
-  return {f.mu * std::abs(s.next), f.mu * M * std::pow(r / f.R, f.order) / (f.R - r)};
+  const MassMoments& M = *f.moments;
+  const Sums s = sums(M, f.order, f.R * (f.axes * gamma) / M.scale(), false);
+  const double r = M.max_radius();
+  return {f.mu * std::abs(s.next) / M.scale(),
+          f.mu * M.mass() * std::pow(r / f.R, f.order) / (f.R - r)};
 }
 
 }  // namespace newtop

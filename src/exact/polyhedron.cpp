@@ -7,6 +7,9 @@
 #include <string>
 #include <unordered_map>
 
+#include "detail.hpp"
+#include "newtop/exact/mass_models.hpp"
+
 namespace newtop {
 namespace {
 
@@ -135,7 +138,45 @@ double signed_volume(const std::vector<Vec3>& v, const std::vector<Triangle>& fa
   return vol / 6.0;
 }
 
+/// σ/24 Σ_f det(a, b, c) (a + b + c) in double-double: every product and sum of the exact vertex
+/// coordinates carried error-free, the result rounded once.
+Vec3 accurate_first_moment(const std::vector<Vec3>& v, const std::vector<Triangle>& faces,
+                           double sigma) {
+  using detail::DoubleDouble;
+  using detail::two_prod;
+  using detail::two_sum;
+  DoubleDouble sum[3];
+  for (const Triangle& t : faces) {
+    const Vec3 &a = v[t[0]], &b = v[t[1]], &c = v[t[2]];
+    DoubleDouble det;
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3, k = (i + 2) % 3;
+      const DoubleDouble bxc = two_prod(b[j], c[k]) + -two_prod(b[k], c[j]);
+      det = det + DoubleDouble{a[i], 0.0} * bxc;
+    }
+    for (int i = 0; i < 3; ++i)
+      sum[i] = sum[i] + det * (two_sum(a[i], b[i]) + DoubleDouble{c[i], 0.0});
+  }
+  return sigma / 24.0 * Vec3(sum[0].value(), sum[1].value(), sum[2].value());
+}
+
 }  // namespace
+
+void Polyhedron::check_mass_properties(const Polyhedron& p) {
+  if (!std::isfinite(p.volume_)) {
+    throw InputError("mesh: the volume overflows (" + format_number(p.volume_) +
+                     "): vertex coordinates too large");
+  }
+  const MassProperties mp = mass_properties(p);
+  if (!std::isfinite(mp.mass)) {
+    throw InputError("density: the mass density * volume overflows (" + format_number(p.density_) +
+                     " * " + format_number(p.volume_) + ")");
+  }
+  if (!mp.inertia_tensor.allFinite() || !mp.center_of_mass.allFinite()) {
+    throw InputError("mesh: the inertia tensor overflows (mass " + format_number(mp.mass) +
+                     "): vertex coordinates or density too large");
+  }
+}
 
 Polyhedron Polyhedron::make(std::vector<Vec3> vertices, std::vector<Triangle> faces, double density,
                             Orientation orientation) {
@@ -196,6 +237,8 @@ Polyhedron Polyhedron::make(std::vector<Vec3> vertices, std::vector<Triangle> fa
   // A fixed edge order (the hash map's order is unspecified) keeps results reproducible.
   std::sort(p.edges_.begin(), p.edges_.end(),
             [](const Edge& a, const Edge& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
+  p.first_moment_ = accurate_first_moment(p.vertices_, p.faces_, density);
+  check_mass_properties(p);
   return p;
 }
 

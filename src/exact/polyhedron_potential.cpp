@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "detail.hpp"
 #include "newtop/exact/polyhedron.hpp"
 
 // Vector variants of atan2 and log in glibc's libmvec (x86-64, glibc ≥ 2.35): declared here so that
@@ -29,6 +30,7 @@ constexpr int kBlock = 512;
 struct Partial {
   double edge_sum = 0.0, face_sum = 0.0;                    // Σ r·E r L, Σ (n·r)² ω
   Vec3 edge_grad = Vec3::Zero(), face_grad = Vec3::Zero();  // Σ E r L, Σ n (n·r) ω
+  Mat3 edge_hess = Mat3::Zero(), face_hess = Mat3::Zero();  // Σ E L, Σ n nᵀ ω (when asked)
 };
 
 /// Vertex positions relative to the field point, r = v − x, and their lengths, computed once per
@@ -43,7 +45,7 @@ struct Relative {
 // math (libmvec, ≤ 4 ulp), then the sums. The transcendental functions dominate the cost; the
 // AVX2 clone runs them four at a time where the processor has it (docs/performance.md).
 NEWTOP_KERNEL void add_faces(const Polyhedron& p, const Relative& rel, int begin, int end,
-                             Partial& s) {
+                             bool hessian, Partial& s) {
   const auto& F = p.faces();
   const auto& N = p.normals();
   double num[kBlock], den[kBlock], nr[kBlock], omega[kBlock];
@@ -63,10 +65,12 @@ NEWTOP_KERNEL void add_faces(const Polyhedron& p, const Relative& rel, int begin
     s.face_sum += nr[q] * nr[q] * omega[q];
     s.face_grad += (nr[q] * omega[q]) * N[begin + q];
   }
+  if (!hessian) return;
+  for (int q = 0; q < n; ++q) s.face_hess += omega[q] * (N[begin + q] * N[begin + q].transpose());
 }
 
 NEWTOP_KERNEL void add_edges(const Polyhedron& p, const Relative& rel, int begin, int end,
-                             Partial& s) {
+                             bool hessian, Partial& s) {
   const auto& Ed = p.edges();
   double arg[kBlock], L[kBlock];
   const int n = end - begin;
@@ -90,11 +94,17 @@ NEWTOP_KERNEL void add_edges(const Polyhedron& p, const Relative& rel, int begin
     s.edge_sum += r1.dot(Er) * L[q];
     s.edge_grad += L[q] * Er;
   }
+  if (!hessian) return;
+  for (int q = 0; q < n; ++q) {
+    const auto& E = Ed[begin + q].E;
+    Mat3 m;
+    m << E[0], E[3], E[4], E[3], E[1], E[5], E[4], E[5], E[2];
+    s.edge_hess += L[q] * m;
+  }
 }
 
-}  // namespace
-
-Attraction attraction(const Polyhedron& p, const Vec3& x, int threads) {
+/// The sums of the closed form over all faces and edges, in fixed blocks added in order.
+Partial sums(const Polyhedron& p, const Vec3& x, int threads, bool hessian) {
   const int nf = static_cast<int>(p.faces().size());
   const int ne = static_cast<int>(p.edges().size());
   const int bf = (nf + kBlock - 1) / kBlock, be = (ne + kBlock - 1) / kBlock;
@@ -112,10 +122,10 @@ Attraction attraction(const Polyhedron& p, const Vec3& x, int threads) {
 #pragma omp for schedule(static)
     for (int b = 0; b < blocks; ++b) {
       if (b < bf) {
-        add_faces(p, rel, b * kBlock, std::min(nf, (b + 1) * kBlock), part[b]);
+        add_faces(p, rel, b * kBlock, std::min(nf, (b + 1) * kBlock), hessian, part[b]);
       } else {
         const int c = b - bf;
-        add_edges(p, rel, c * kBlock, std::min(ne, (c + 1) * kBlock), part[b]);
+        add_edges(p, rel, c * kBlock, std::min(ne, (c + 1) * kBlock), hessian, part[b]);
       }
     }
   }
@@ -125,9 +135,29 @@ Attraction attraction(const Polyhedron& p, const Vec3& x, int threads) {
     t.face_sum += s.face_sum;
     t.edge_grad += s.edge_grad;
     t.face_grad += s.face_grad;
+    t.edge_hess += s.edge_hess;
+    t.face_hess += s.face_hess;
   }
+  return t;
+}
+
+}  // namespace
+
+Attraction attraction(const Polyhedron& p, const Vec3& x, int threads) {
+  const Partial t = sums(p, x, threads, false);
   const double sigma = p.density();
-  return {0.5 * sigma * (t.edge_sum - t.face_sum), sigma * (t.face_grad - t.edge_grad)};
+  const Vec3 grad = sigma * (t.face_grad - t.edge_grad);
+  return {0.5 * sigma * (t.edge_sum - t.face_sum), grad, grad.cross(x)};
+}
+
+GravityGradient gravity_gradient(const Polyhedron& p, const Vec3& x, int threads) {
+  const Partial t = sums(p, x, threads, true);
+  const double sigma = p.density();
+  const Vec3 grad = sigma * (t.face_grad - t.edge_grad);
+  GravityGradient g;
+  g.tensor = sigma * (t.edge_hess - t.face_hess);
+  g.moment_jacobian = detail::cross_matrix(grad) - detail::cross_matrix(x) * g.tensor;
+  return g;
 }
 
 }  // namespace newtop

@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <array>
-#include <boost/math/quadrature/gauss_kronrod.hpp>
-#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/ellint_rf.hpp>
+#include <boost/math/special_functions/ellint_rj.hpp>
 #include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <cmath>
 #include <limits>
-#include <numeric>
 
 namespace newtop {
 namespace {
@@ -15,84 +14,58 @@ namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 // m × ω below this multiple of eps·|m||ω| is a permanent rotation: the rounding of m × ω itself.
 constexpr double kPermanentFactor = 8.0;
-// Gauss–Kronrod's error estimate |K15 − G7| bounds the 7-point Gauss error; the 15-point Kronrod
-// result it returns is far more accurate (its error is roughly the square of the estimate, in
-// relative terms), so asking 1e-10 of the estimate gives an angle correct to a few ulps.
-constexpr double kQuadratureTolerance = 1e-10;
-constexpr unsigned kQuadratureDepth = 15;
-// The rate is periodic and analytic over one period, where the trapezoidal rule converges
-// geometrically: double the points until two estimates agree to a few ulps.
-constexpr double kTrapezoidTolerance = 4 * kEps;
-constexpr int kTrapezoidMaxPoints = 1 << 14;
 
-/// Signed permutation (det = +1) whose rows pick the body axes in the order `order`.
-Mat3 permutation(const std::array<int, 3>& order) {
-  Mat3 P = Mat3::Zero();
-  for (int r = 0; r < 3; ++r) P(r, order[r]) = 1.0;
-  if (P.determinant() < 0) P.row(2) *= -1.0;
-  return P;
+// Boost.Math promotes double arguments to long double by default, which costs ~7× here; the
+// double algorithms are accurate to a few ulps.
+using DoublePolicy = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
+
+double rf(double x, double y, double z) { return boost::math::ellint_rf(x, y, z, DoublePolicy()); }
+double rj(double x, double y, double z, double p) {
+  return boost::math::ellint_rj(x, y, z, p, DoublePolicy());
 }
 
 /// Rotation S(l) taking the unit vector l to e_z: S = R_x(θ) R_z(ψ) Q with Q the cyclic permutation
 /// that brings `pole` last, l' = Q l = (sinθ sinψ, sinθ cosψ, cosθ).
 Mat3 euler_frame(const Vec3& l, int pole) {
   const int a = (pole + 1) % 3, b = (pole + 2) % 3;
-  Mat3 Q = Mat3::Zero();
-  Q(0, a) = Q(1, b) = Q(2, pole) = 1.0;
   const double st = std::hypot(l[a], l[b]), ct = l[pole];
   const double sp = st > 0 ? l[a] / st : 0.0, cp = st > 0 ? l[b] / st : 1.0;
-  Mat3 Rz, Rx;
-  Rz << cp, -sp, 0, sp, cp, 0, 0, 0, 1;
-  Rx << 1, 0, 0, 0, ct, -st, 0, st, ct;
-  return Rx * Rz * Q;
-}
-
-/// dφ/dt = |m| (m_a²/I_a + m_b²/I_b)/(m_a² + m_b²), (a, b, pole) cyclic.
-double precession_rate(const EulerPoinsot& s, const Vec3& m) {
-  const int a = (s.pole + 1) % 3, b = (s.pole + 2) % 3;
-  const double ma2 = m[a] * m[a], mb2 = m[b] * m[b];
-  const double den = ma2 + mb2;
-  if (den == 0.0) return 0.0;
-  return m.norm() * (ma2 / s.inertia[a] + mb2 / s.inertia[b]) / den;
-}
-
-double integrate_rate(const EulerPoinsot& s, double t0, double t1) {
-  if (t0 == t1) return 0.0;
-  auto f = [&](double t) { return precession_rate(s, angular_momentum(s, t)); };
-  return boost::math::quadrature::gauss_kronrod<double, 15>::integrate(f, t0, t1, kQuadratureDepth,
-                                                                       kQuadratureTolerance);
-}
-
-/// ∫ over one period of the periodic rate by the trapezoidal rule, points doubled to convergence.
-double integrate_period(const EulerPoinsot& s) {
-  auto f = [&](double t) { return precession_rate(s, angular_momentum(s, t)); };
-  int n = 16;
-  double sum = 0.0;
-  for (int i = 0; i < n; ++i) sum += f(s.period * i / n);
-  double estimate = sum * s.period / n;
-  while (n < kTrapezoidMaxPoints) {
-    for (int i = 0; i < n; ++i) sum += f(s.period * (2 * i + 1) / (2 * n));
-    n *= 2;
-    const double next = sum * s.period / n;
-    const bool converged = std::abs(next - estimate) <= kTrapezoidTolerance * std::abs(next);
-    estimate = next;
-    if (converged) break;
+  // Rows of R_x(θ) R_z(ψ), then columns permuted by Q (column j of the product goes to axis j').
+  const double r[3][3] = {{cp, -sp, 0.0}, {ct * sp, ct * cp, -st}, {st * sp, st * cp, ct}};
+  Mat3 S;
+  for (int i = 0; i < 3; ++i) {
+    S(i, a) = r[i][0];
+    S(i, b) = r[i][1];
+    S(i, pole) = r[i][2];
   }
-  return estimate;
+  return S;
 }
 
+/// n s³ R_J(c², d², 1, 1 − n s²)/n-free part: s³ R_J(…) for |φ| ≤ π/2 (c = cos φ ≥ 0).
+double third_kind_part(double n, double s, double c, double d) {
+  if (s == 0.0) return 0.0;
+  return s * s * s * rj(c * c, d * d, 1.0, 1.0 - n * s * s);
+}
+
+/// The working frame, the elliptic parameters and the constants of the precession angle.
 void setup_elliptic(EulerPoinsot& s, const Vec3& m) {
   const Vec3& I = s.inertia;
   std::array<int, 3> order{0, 1, 2};
-  std::sort(order.begin(), order.end(), [&](int i, int j) { return I[i] < I[j]; });
+  if (I[order[0]] > I[order[1]]) std::swap(order[0], order[1]);
+  if (I[order[1]] > I[order[2]]) std::swap(order[1], order[2]);
+  if (I[order[0]] > I[order[1]]) std::swap(order[0], order[1]);
   const double Imid = I[order[1]];
   // D = L² − 2E I_mid: m circulates about the largest axis when D > 0, the smallest when D < 0.
   double D = 0.0;
   for (int i = 0; i < 3; ++i) D += m[i] * m[i] * (I[i] - Imid) / I[i];
   if (D < 0) std::swap(order[0], order[2]);
-  s.frame = permutation(order);
+  // Signed permutation with det = +1: an odd permutation gets its last row negated.
+  const int inversions = (order[0] > order[1]) + (order[0] > order[2]) + (order[1] > order[2]);
+  s.frame.setZero();
+  for (int r = 0; r < 3; ++r) s.frame(r, order[r]) = 1.0;
+  if (inversions % 2 == 1) s.frame(2, order[2]) = -1.0;
   const Vec3 w = s.frame * m;
-  const Vec3 J = (s.frame.cwiseAbs() * I);
+  const Vec3 J(I[order[0]], I[order[1]], I[order[2]]);
   s.moments = J;
   const double A = J[0], B = J[1], C = J[2];
   // 2EC − L² and L² − 2EA written as sums of terms of one sign (no cancellation).
@@ -104,18 +77,39 @@ void setup_elliptic(EulerPoinsot& s, const Vec3& m) {
   const double s3 = w[2] < 0 ? -1.0 : 1.0;
   const double k2 = std::clamp((B - A) / (C - B) * D1 / D2, 0.0, 1.0);
   s.modulus = std::sqrt(k2);
-  const double nu0 = std::sqrt((C - B) * D2 / (A * B * C));
-  s.nu = s3 * (C > B ? 1.0 : -1.0) * nu0;
+  s.nu = s3 * (C > B ? 1.0 : -1.0) * std::sqrt((C - B) * D2 / (A * B * C));
   s.amplitude = Vec3(a1, a2, s3 * a3);
-  const double amp = std::atan2(w[1] / a2, w[0] / a1);
-  s.u0 = boost::math::ellint_1(s.modulus, amp);
-  s.period = s.modulus < 1.0 ? 4.0 * boost::math::ellint_1(s.modulus) / std::abs(s.nu)
-                             : std::numeric_limits<double>::infinity();
-  // The pole of the Euler angles: the body axis that m stays farthest from.
-  const Vec3 bound = s.frame.cwiseAbs().transpose() * Vec3(a1, a2, a3);
-  Eigen::Index pole = 0;
-  bound.minCoeff(&pole);
-  s.pole = static_cast<int>(pole);
+  const double kc2 = 1.0 - k2;
+  s.quarter = kc2 > 0.0 ? rf(0.0, kc2, 1.0) : std::numeric_limits<double>::infinity();
+  s.period = 4.0 * s.quarter / std::abs(s.nu);
+  // Start: sn u0 = w2/α2, cn u0 = w1/α1, dn u0 = |w3|/α3 (the last without the cancellation of
+  // 1 − k² sn² near the separatrix); u0 = F(am u0) by Carlson's R_F, reduced to |u0r| ≤ K.
+  double sn0 = a2 > 0 ? w[1] / a2 : 0.0, cn0 = a1 > 0 ? w[0] / a1 : 1.0;
+  const double norm = std::hypot(sn0, cn0);
+  sn0 /= norm, cn0 /= norm;
+  const double dn0 = a3 > 0 ? std::abs(w[2]) / a3 : 1.0;
+  const double f0 = sn0 * rf(cn0 * cn0, dn0 * dn0, 1.0);  // F(φ0r), φ0r = φ0 reduced
+  s.half_periods_start = cn0 < 0 ? (sn0 < 0 ? -1 : 1) : 0;
+  // For cn0 < 0: φ0 = jπ + φ0r with sin φ0r = −sn0 (j = ±1), so u0 = 2jK + F(φ0r).
+  const double sgn = s.half_periods_start == 0 ? 1.0 : -1.0;
+  s.u0 = s.half_periods_start == 0 ? f0 : 2.0 * s.half_periods_start * s.quarter - f0;
+  // The pole of the Euler angles: the working axis that m stays farthest from (least amplitude);
+  // L² − m_p² = c (1 − n sn²u).
+  const double L2 = w.squaredNorm(), L = std::sqrt(L2);
+  int p = 0;
+  double c = a3 * a3, n = a3 > 0 ? -(a1 * a1) / (a3 * a3) : 0.0;
+  if (a2 < a1 && a2 <= a3) {
+    p = 1, c = L2, n = a2 * a2 / L2;
+  } else if (a3 < a1 && a3 < a2) {
+    p = 2, c = a1 * a1, n = a1 > 0 ? -(a3 * a3) * k2 / (a1 * a1) : 0.0;
+  }
+  s.pole = order[p];
+  double excess = 0.0;  // 2E − L²/I_p
+  for (int i = 0; i < 3; ++i) excess += w[i] * w[i] * (1.0 / J[i] - 1.0 / J[p]);
+  s.characteristic = n;
+  s.mean_rate = L / J[p] + L * excess / c;
+  s.third_kind_scale = L * excess * n / (3.0 * c * s.nu);
+  s.third_kind_start = third_kind_part(n, sgn * sn0, sgn * cn0, dn0);
 }
 
 }  // namespace
@@ -139,23 +133,72 @@ EulerPoinsot euler_poinsot(const Body& body, const State& x0) {
     s.period = std::numeric_limits<double>::infinity();
     return s;
   }
+  s.momentum_norm = x0.m.norm();
   setup_elliptic(s, x0.m);
+  s.euler_start = euler_frame(x0.m.normalized(), s.pole);
   return s;
 }
 
+namespace {
+
+/// sn, cn, dn at u = u_r + 2jK (|u_r| ≤ K), returned for u_r, with j.
+struct Reduced {
+  double sn, cn, dn;
+  int j;
+};
+
+Reduced jacobi_reduced(const EulerPoinsot& s, double u) {
+  Reduced r{0.0, 1.0, 1.0, 0};
+  const double half = 2.0 * s.quarter;
+  if (std::isfinite(half)) r.j = static_cast<int>(std::nearbyint(u / half));
+  const double ur = std::isfinite(half) ? u - r.j * half : u;
+  double dn_boost = 0.0;
+  r.sn = boost::math::jacobi_elliptic(s.modulus, ur, &r.cn, &dn_boost, DoublePolicy());
+  // Boost's dn in double loses digits near |u_r| = K (3e-12 absolute at K − u_r = 3e-5, k = 0.79,
+  // against its long-double value); dn² = k'² + k² cn² is a sum of two non-negative terms, exact
+  // to a few ε from the accurate cn.
+  const double k2 = s.modulus * s.modulus;
+  r.dn = std::sqrt((1.0 - k2) + k2 * r.cn * r.cn);
+  return r;
+}
+
+/// m(t) from the Jacobi functions, scaled to the invariant |m| = |m(0)|: the amplitudes and the
+/// double-precision Jacobi functions carry errors of a few ε that keep their sign while the state
+/// changes slowly, and m·γ after the flow is |m(t)|/|m(0)| times m·γ before it (γ(t) is a rotation
+/// of γ(0) taking m(0)/|m(0)| to m(t)/|m(t)|), so without the scaling the Casimir m·γ of a
+/// splitting drifts like the number of steps instead of performing a random walk.
+Vec3 momentum_at(const EulerPoinsot& s, const Reduced& r) {
+  const double sign = r.j % 2 == 0 ? 1.0 : -1.0;  // sn, cn change sign every half period
+  const Vec3 w(s.amplitude[0] * sign * r.cn, s.amplitude[1] * sign * r.sn, s.amplitude[2] * r.dn);
+  return (s.momentum_norm / w.norm()) * (s.frame.transpose() * w);
+}
+
+double precession_at(const EulerPoinsot& s, const Reduced& r, double t) {
+  const double n = s.characteristic;
+  double third = third_kind_part(n, r.sn, r.cn, r.dn) - s.third_kind_start;
+  const int dj = r.j - s.half_periods_start;
+  if (dj != 0) third += 2.0 * dj * rj(0.0, 1.0 - s.modulus * s.modulus, 1.0, 1.0 - n);
+  return s.mean_rate * t + s.third_kind_scale * third;
+}
+
+}  // namespace
+
 Vec3 angular_momentum(const EulerPoinsot& s, double t) {
   if (s.permanent) return s.initial.m;
-  double cn = 0.0, dn = 0.0;
-  const double sn = boost::math::jacobi_elliptic(s.modulus, s.u0 + s.nu * t, &cn, &dn);
-  const Vec3 w(s.amplitude[0] * cn, s.amplitude[1] * sn, s.amplitude[2] * dn);
-  return s.frame.transpose() * w;
+  return momentum_at(s, jacobi_reduced(s, s.u0 + s.nu * t));
 }
 
 double precession_angle(const EulerPoinsot& s, double t) {
   if (s.permanent) return 0.0;
-  if (!std::isfinite(s.period) || std::abs(t) < s.period) return integrate_rate(s, 0.0, t);
-  const double n = std::trunc(t / s.period);
-  return n * integrate_period(s) + integrate_rate(s, n * s.period, t);
+  return precession_at(s, jacobi_reduced(s, s.u0 + s.nu * t), t);
+}
+
+double precession_rate(const EulerPoinsot& s, const Vec3& m) {
+  const int a = (s.pole + 1) % 3, b = (s.pole + 2) % 3;
+  const double ma2 = m[a] * m[a], mb2 = m[b] * m[b];
+  const double den = ma2 + mb2;
+  if (den == 0.0) return 0.0;
+  return m.norm() * (ma2 / s.inertia[a] + mb2 / s.inertia[b]) / den;
 }
 
 State free_body_state(const EulerPoinsot& s, double t) {
@@ -167,35 +210,15 @@ State free_body_state(const EulerPoinsot& s, double t) {
     const Eigen::AngleAxisd R(-n * t, w / n);
     return {s.initial.m, R * s.initial.gamma};
   }
-  const Vec3 m = angular_momentum(s, t);
-  const Mat3 S0 = euler_frame(s.initial.m.normalized(), s.pole);
+  const Reduced r = jacobi_reduced(s, s.u0 + s.nu * t);
+  const Vec3 m = momentum_at(s, r);
   const Mat3 St = euler_frame(m.normalized(), s.pole);
-  const Mat3 Rz(Eigen::AngleAxisd(-precession_angle(s, t), Vec3::UnitZ()));
-  return {m, St.transpose() * (Rz * (S0 * s.initial.gamma))};
+  const Mat3 Rz(Eigen::AngleAxisd(-precession_at(s, r, t), Vec3::UnitZ()));
+  return {m, St.transpose() * (Rz * (s.euler_start * s.initial.gamma))};
 }
-
-}  // namespace newtop
-
-namespace newtop {
 
 State free_body_flow(const Body& body, const State& x, double h) {
   return free_body_state(euler_poinsot(body, x), h);
-}
-
-FreeBodySplittingStepper::FreeBodySplittingStepper(const CompositionTable& table)
-    : order_(table.order) {
-  auto push = [&](bool kick, double fraction) {
-    if (!program_.empty() && program_.back().first == kick) {
-      program_.back().second += fraction;
-    } else {
-      program_.emplace_back(kick, fraction);
-    }
-  };
-  for (double c : table.gamma) {
-    push(true, 0.5 * c);
-    push(false, c);
-    push(true, 0.5 * c);
-  }
 }
 
 }  // namespace newtop

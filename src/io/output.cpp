@@ -7,8 +7,35 @@
 
 namespace newtop::io {
 
-AtomicFile::AtomicFile(std::string path)
+namespace {
+
+namespace fs = std::filesystem;
+
+void check_output_path(const std::string& path, std::span<const std::string> inputs) {
+  if (path.empty()) throw InputError("output file: expected a file name, found an empty name");
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (fs::is_directory(st) || path.back() == '/') {
+    throw InputError(path + ": expected an output file name, found a directory");
+  }
+  if (fs::exists(st) && !fs::is_regular_file(st)) {
+    throw InputError(path +
+                     ": expected an output file name, found an existing file that is not a "
+                     "regular file (a device or a pipe would be replaced)");
+  }
+  for (const std::string& in : inputs) {
+    if (fs::exists(st) && fs::equivalent(path, in, ec)) {
+      throw InputError(path + ": expected an output file, found the input file " + in +
+                       " (it would be overwritten)");
+    }
+  }
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(std::string path, std::span<const std::string> inputs)
     : path_(std::move(path)), tmp_(path_ + ".partial-" + std::to_string(::getpid())) {
+  check_output_path(path_, inputs);
   out_.open(tmp_, std::ios::binary | std::ios::trunc);
   if (!out_) throw InputError(path_ + ": cannot open the output file for writing");
 }

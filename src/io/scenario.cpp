@@ -2,12 +2,13 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <limits>
 
+#include "file_check.hpp"
 #include "mesh_section.hpp"
 #include "newtop/exact/exact_field.hpp"
-#include "toml_reader.hpp"
+#include "scenario_sections.hpp"
+#include "toml_parse.hpp"
 
 namespace newtop::io {
 namespace {
@@ -16,11 +17,32 @@ namespace {
 // 15 significant digits passes, a hand-typed approximation such as [0.6, 0.8, 0.01] does not.
 constexpr double kUnitTolerance = 1e-12;
 
+const std::vector<std::string> kSections{"body",    "mass_model", "field",
+                                         "initial", "integrate",  "output"};
+const std::vector<std::string> kBodyKeys{"inertia", "inertia_tensor", "mass", "center_of_mass",
+                                         "gyrostat"};
+const std::vector<std::string> kInitialKeys{"omega", "gamma", "normalize"};
+const std::vector<std::string> kIntegrateKeys{"method", "step", "tol", "t_end", "t0", "max_steps"};
+const std::vector<std::string> kOutputKeys{"file", "every", "dt"};
+
+/// Unknown sections and keys first, in every section: a misspelt key is reported as itself, not
+/// as the required key it displaced.
+void check_vocabulary(const toml::table& doc, const std::string& source) {
+  TableReader(doc, source, "").check_keys(kSections);
+  const std::pair<const char*, const std::vector<std::string>*> sections[] = {
+      {"body", &kBodyKeys},       {"mass_model", &mass_model_keys()}, {"field", &field_keys()},
+      {"initial", &kInitialKeys}, {"integrate", &kIntegrateKeys},     {"output", &kOutputKeys}};
+  for (const auto& [name, keys] : sections) {
+    if (const toml::table* t = doc[name].as_table())
+      TableReader(*t, source, name).check_keys(*keys);
+  }
+}
+
 Body read_body(TableReader& r) {
   const bool has_principal = r.has("inertia");
   const bool has_tensor = r.has("inertia_tensor");
   if (has_principal && has_tensor) {
-    r.fail("inertia_tensor", "expected either inertia or inertia_tensor, found both");
+    r.fail("inertia_tensor", "conflicts with inertia: give one of them");
   }
   if (!has_principal && !has_tensor) {
     r.fail("inertia", "missing: give inertia = [A, B, C] or inertia_tensor = [[..],[..],[..]]");
@@ -36,68 +58,27 @@ Body read_body(TableReader& r) {
   });
 }
 
-QuadraticField read_field(TableReader& r, ExactSettings& exact) {
-  const std::string kind = r.optional_string("kind").value_or("");
-  // Unknown keys (typos) first: a misspelt "g" must be reported as such, not as a missing g.
-  r.finish({"N", "plane_offset", "g", "lambda", "mu", "R", "order"});
-  QuadraticField f;
-  if (kind == "exact" || kind == "multipole") {
-    exact.kind = kind == "exact" ? FieldKind::exact : FieldKind::multipole;
-    exact.mu = r.number("mu");
-    exact.R = r.number("R");
-    if (exact.kind == FieldKind::multipole) {
-      const std::int64_t order = r.integer("order");
-      if (order < 1 || order > 30) {
-        r.fail("order", "expected an integer in [1, 30], found " + std::to_string(order));
-      }
-      exact.order = static_cast<int>(order);
-    }
-    if (!exact.mass_model) r.fail("kind", "kind = \"" + kind + "\" needs a [mass_model] section");
-    f = r.checked([&] { return QuadraticField::from_mu_R(exact.mu, exact.R); });
-    r.checked([&] { return ExactField::make(exact.mass_model, exact.mu, exact.R); });
-  } else if (kind == "brun") {
-    const double N = r.number("N");
-    const double d = r.optional_number("plane_offset").value_or(0.0);
-    f = r.checked([&] { return QuadraticField::brun(N, d); });
-  } else if (kind == "uniform") {
-    const double g = r.number("g");
-    f = r.checked([&] { return QuadraticField::uniform(g); });
-  } else if (kind.empty() || kind == "newtonian" || kind == "coulomb") {
-    const bool g = r.has("g"), lam = r.has("lambda"), R = r.has("R"), mu = r.has("mu");
-    if (mu && R && !g && !lam) {
-      const double vmu = r.number("mu"), vR = r.number("R");
-      f = r.checked([&] { return QuadraticField::from_mu_R(vmu, vR); });
-    } else if (g && R && !lam && !mu) {
-      const double vg = r.number("g"), vR = r.number("R");
-      f = r.checked([&] { return QuadraticField::from_g_R(vg, vR); });
-    } else if (g && lam && !R && !mu) {
-      const double vg = r.number("g"), vl = r.number("lambda");
-      f = r.checked([&] { return QuadraticField::coulomb(vg, vl); });
-    } else {
-      r.fail(g ? "g" : (mu ? "mu" : "lambda"),
-             "expected exactly one of (g, lambda), (g, R), (mu, R), or kind = \"brun\" with N, "
-             "or kind = \"uniform\" with g; found " +
-                 std::string(g ? "g " : "") + (lam ? "lambda " : "") + (mu ? "mu " : "") +
-                 (R ? "R" : (g || lam || mu ? "" : "none of them")));
-    }
-  } else {
-    r.fail("kind",
-           "expected \"newtonian\", \"coulomb\", \"uniform\", \"brun\", \"exact\" or "
-           "\"multipole\", found \"" +
-               kind + "\"");
+BodySource body_source(const toml::table* body, const MassModelSection* model) {
+  const std::string inertia =
+      body && body->contains("inertia_tensor") ? "inertia_tensor" : "inertia";
+  if (model && model->model) {
+    const Factor m{"mass_model", model->key};
+    return {m, m, m, {"body", "gyrostat"}};
   }
-  r.finish({"N", "plane_offset", "g", "lambda", "mu", "R", "order"});
-  return f;
+  return {{"body", "mass"}, {"body", "center_of_mass"}, {"body", inertia}, {"body", "gyrostat"}};
 }
 
 State read_initial(TableReader& r, const Body& body) {
   const Vec3 P_omega = r.vec3("omega");
   Vec3 P_gamma = r.vec3("gamma");
   const bool normalize = r.boolean("normalize", false);
-  const double norm = P_gamma.norm();
-  if (norm == 0.0) r.fail("gamma", "expected a unit vector, found [0, 0, 0]");
+  // The norm without overflow or underflow: of the vector scaled by its largest component.
+  const double largest = P_gamma.cwiseAbs().maxCoeff();
+  if (largest == 0.0) r.fail("gamma", "expected a unit vector, found [0, 0, 0]");
+  const Vec3 unit_scaled = P_gamma / largest;
+  const double norm = largest * unit_scaled.norm();
   if (normalize) {
-    P_gamma /= norm;
+    P_gamma = unit_scaled / unit_scaled.norm();
   } else if (std::abs(norm - 1.0) > kUnitTolerance) {
     r.fail("gamma", "expected a unit vector (|gamma| = 1 to 1e-12), found |gamma| = " +
                         format_number(norm) + "; add normalize = true to [initial] to rescale it");
@@ -108,44 +89,70 @@ State read_initial(TableReader& r, const Body& body) {
   return state_from_omega(body, P.transpose() * P_omega, P.transpose() * P_gamma);
 }
 
+/// The body of a mass model; what makes it impossible (an overflowing inertia tensor) is reported
+/// at the [mass_model] key that defines the model.
+Body body_of_model(const MassModelSection& mm, const toml::table& section, const Vec3& k,
+                   const std::string& source) {
+  try {
+    return body_of(*mm.model, k);
+  } catch (const InputError& e) {
+    TableReader(section, source, "mass_model").fail(mm.key, std::string("its body: ") + e.what());
+  }
+}
+
 /// [body], [mass_model] or both (then they must agree; [body] may then hold only a gyrostat).
-Body read_body_or_mass_model(const toml::table* t, const ExactSettings& exact,
-                             const std::string& source) {
-  if (!exact.mass_model) {
+Body read_body_or_mass_model(const toml::table* t, const toml::table* mm_table,
+                             const MassModelSection& mm, const std::string& source) {
+  if (!mm.model) {
     TableReader r(*t, source, "body");
     return read_body(r);
   }
-  if (!t) return body_of(*exact.mass_model);
+  if (!t) return body_of_model(mm, *mm_table, Vec3::Zero(), source);
   TableReader r(*t, source, "body");
   const Vec3 k = r.optional_vec3("gyrostat").value_or(Vec3::Zero());
-  const Body derived = body_of(*exact.mass_model, k);
-  if (r.has("inertia") || r.has("inertia_tensor")) {
+  const Body derived = body_of_model(mm, *mm_table, k, source);
+  const bool whole = r.has("inertia") || r.has("inertia_tensor");
+  const bool mass = r.has("mass"), com = r.has("center_of_mass");
+  if (whole) {
     TableReader again(*t, source, "body");
     check_agreement(again, read_body(again), derived);
-  }
-  r.finish({"mass", "center_of_mass"});
-  if (!r.has("inertia") && !r.has("inertia_tensor") && (r.has("mass") || r.has("center_of_mass"))) {
-    r.fail(r.has("mass") ? "mass" : "center_of_mass",
+  } else if (mass || com) {
+    r.fail(mass ? "mass" : "center_of_mass",
            "with [mass_model], give the whole body (inertia, mass, center_of_mass) to cross-check "
            "it, or only gyrostat");
   }
+  r.finish();
   return derived;
 }
 
 IntegrateSection read_integrate(TableReader& r) {
   IntegrateSection s;
   s.method = r.optional_string("method");
-  if (s.method) r.checked([&] { return method_info(*s.method); });
+  // A step is for the fixed-step methods, a tolerance for the adaptive ones: never both.
+  if (r.has("step") && r.has("tol")) {
+    r.fail("tol", "conflicts with step: give step (fixed-step methods) or tol (adaptive methods)");
+  }
+  if (s.method) {
+    const MethodInfo& info = r.checked([&] { return method_info(*s.method); });
+    const bool adaptive = info.kind == MethodKind::adaptive;
+    if (r.has(adaptive ? "step" : "tol")) {
+      r.fail(adaptive ? "step" : "tol", "conflicts with method = \"" + *s.method +
+                                            "\", which takes " +
+                                            (adaptive ? "a tolerance (tol)" : "a step (step)"));
+    }
+  }
   s.step = r.optional_number("step");
-  if (s.step && !(*s.step > 0))
+  if (s.step && !(*s.step > 0)) {
     r.fail("step", "expected a number > 0, found " + format_number(*s.step));
+  }
   s.tol = r.optional_number("tol");
   if (s.tol && !(*s.tol > 0))
     r.fail("tol", "expected a number > 0, found " + format_number(*s.tol));
   s.t_end = r.optional_number("t_end");
   s.t0 = r.optional_number("t0").value_or(0.0);
-  s.max_steps = r.optional_integer("max_steps");
-  if (s.max_steps && *s.max_steps < 1) r.fail("max_steps", "expected an integer >= 1");
+  if (r.has("max_steps")) {
+    s.max_steps = r.integer("max_steps", 1, std::numeric_limits<std::int64_t>::max());
+  }
   r.finish();
   return s;
 }
@@ -153,8 +160,11 @@ IntegrateSection read_integrate(TableReader& r) {
 OutputSection read_output(TableReader& r) {
   OutputSection s;
   s.file = r.optional_string("file");
-  s.every = r.optional_integer("every").value_or(1);
-  if (s.every < 1) r.fail("every", "expected an integer >= 1, found " + std::to_string(s.every));
+  if (s.file && s.file->empty()) r.fail("file", "expected a file name, found an empty string");
+  if (r.has("every")) s.every = r.integer("every", 1, std::numeric_limits<std::int64_t>::max());
+  s.dt = r.optional_number("dt");
+  if (s.dt && !(*s.dt > 0)) r.fail("dt", "expected a number > 0, found " + format_number(*s.dt));
+  if (s.dt && r.has("every")) r.fail("dt", "expected either every or dt, found both");
   r.finish();
   return s;
 }
@@ -162,15 +172,8 @@ OutputSection read_output(TableReader& r) {
 }  // namespace
 
 Scenario parse_scenario(const std::string& text, const std::string& source) {
-  toml::table doc;
-  try {
-    doc = toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream os;
-    os << source << ":" << e.source().begin.line << ":" << e.source().begin.column
-       << ": malformed TOML: " << e.description();
-    throw InputError(os.str());
-  }
+  const toml::table doc = parse_toml(text, source);
+  check_vocabulary(doc, source);
   TableReader top(doc, source, "");
   auto section = [&](const std::string& name, bool required) -> const toml::table* {
     const toml::table* t = top.table(name);
@@ -178,17 +181,25 @@ Scenario parse_scenario(const std::string& text, const std::string& source) {
     return t;
   };
   ExactSettings exact;
-  if (const toml::table* t = section("mass_model", false)) {
-    TableReader r(*t, source, "mass_model");
-    exact.mass_model = read_mass_model(r, std::filesystem::path(source).parent_path().string());
+  MassModelSection mm;
+  std::vector<std::string> input_files{source};
+  const toml::table* mm_table = section("mass_model", false);
+  if (mm_table) {
+    TableReader r(*mm_table, source, "mass_model");
+    mm = read_mass_model(r, std::filesystem::path(source).parent_path().string());
+    exact.mass_model = mm.model;
+    input_files.insert(input_files.end(), mm.files.begin(), mm.files.end());
   }
-  const Body body_value =
-      read_body_or_mass_model(section("body", !exact.mass_model), exact, source);
-  TableReader field(*section("field", true), source, "field");
-  Model model{body_value, read_field(field, exact)};
+  const toml::table* body_table = section("body", !mm.model);
+  const Body body_value = read_body_or_mass_model(body_table, mm_table, mm, source);
+  TableReader field_reader(*section("field", true), source, "field");
+  const FieldSection field = read_field(field_reader, exact);
+  const Model model{body_value, field.field};
   TableReader initial(*section("initial", true), source, "initial");
   const State x0 = read_initial(initial, model.body);
-  Scenario s{source, model, x0, {}, {}, exact};
+  check_magnitudes(model, x0, field, body_source(body_table, mm_table ? &mm : nullptr), doc,
+                   source);
+  Scenario s{source, model, x0, {}, {}, exact, input_files};
   if (const toml::table* t = section("integrate", false)) {
     TableReader r(*t, source, "integrate");
     s.integrate = read_integrate(r);
@@ -202,18 +213,14 @@ Scenario parse_scenario(const std::string& text, const std::string& source) {
 }
 
 Scenario load_scenario(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot read the scenario file (missing or unreadable)");
-  std::ostringstream os;
-  os << in.rdbuf();
-  if (in.bad()) throw InputError(path + ": cannot read the scenario file");
-  return parse_scenario(os.str(), path);
+  return parse_scenario(read_regular_file(path, kMaxTomlBytes, "scenario file"), path);
 }
 
 MethodSettings resolve_method(const Scenario& s, const IntegrateOverrides& o) {
   MethodSettings m;
   const std::optional<double> step = o.step ? o.step : (o.tol ? std::nullopt : s.integrate.step);
   const std::optional<double> tol = o.tol ? o.tol : (o.step ? std::nullopt : s.integrate.tol);
+  const bool named = o.method || (!o.step && !o.tol && s.integrate.method);
   if (o.method) {
     m.name = *o.method;
   } else if (o.step || o.tol) {
@@ -224,17 +231,24 @@ MethodSettings resolve_method(const Scenario& s, const IntegrateOverrides& o) {
     m.name = std::string(step ? kDefaultFixedMethod : kDefaultAdaptiveMethod);
   }
   const MethodInfo& info = method_info(m.name);
-  if (info.kind == MethodKind::adaptive) {
-    if (!tol) {
-      throw InputError(s.source + ": tol: method " + m.name +
-                       " needs a tolerance: give --tol or [integrate] tol");
-    }
+  const bool adaptive = info.kind == MethodKind::adaptive;
+  if (!named && !step && !tol) {
+    throw InputError(s.source +
+                     ": [integrate]: a step or a tolerance is needed: give --step (fixed step, " +
+                     std::string(kDefaultFixedMethod) + ") or --tol (adaptive, " +
+                     std::string(kDefaultAdaptiveMethod) + "), or step or tol in [integrate]");
+  }
+  if (adaptive && !tol) {
+    throw InputError(s.source + ": tol: method " + m.name + " is adaptive and needs a tolerance" +
+                     (step ? ", not a step" : "") + ": give --tol or [integrate] tol");
+  }
+  if (!adaptive && !step) {
+    throw InputError(s.source + ": step: method " + m.name + " takes a fixed step" +
+                     (tol ? ", not a tolerance" : "") + ": give --step or [integrate] step");
+  }
+  if (adaptive) {
     m.abs_tol = m.rel_tol = *tol;
   } else {
-    if (!step) {
-      throw InputError(s.source + ": step: method " + m.name +
-                       " needs a step: give --step or [integrate] step");
-    }
     m.step = *step;
   }
   validate(m);

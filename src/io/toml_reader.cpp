@@ -1,9 +1,37 @@
 #include "toml_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
+#include "newtop/io/suggest.hpp"
+#include "toml_parse.hpp"
+
 namespace newtop::io {
+namespace {
+
+// A float written without a fractional part still reads as one: "3.0", not "3".
+std::string float_text(double x) {
+  std::string s = format_number(x);
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+  return s;
+}
+
+// The double equal to n, if there is one (every integer up to 2^53, then fewer and fewer).
+std::optional<double> exact_double(std::int64_t n) {
+  const double d = static_cast<double>(n);
+  if (d >= 0x1p63) return std::nullopt;  // n < 2^63 rounded up to 2^63
+  if (static_cast<std::int64_t>(d) != n) return std::nullopt;
+  return d;
+}
+
+std::string list(const std::vector<std::string>& names, const char* open, const char* close) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + std::string(open) + n + close;
+  return out;
+}
+
+}  // namespace
 
 std::string describe(const toml::node& node) {
   std::ostringstream os;
@@ -12,21 +40,62 @@ std::string describe(const toml::node& node) {
   } else if (node.is_table()) {
     os << "a table";
   } else if (node.is_string()) {
-    os << "the string \"" << node.as_string()->get() << "\"";
+    os << "the string \"" << printable(node.as_string()->get()) << "\"";
   } else if (node.is_boolean()) {
     os << "the boolean " << (node.as_boolean()->get() ? "true" : "false");
   } else if (node.is_integer()) {
-    os << node.as_integer()->get();
+    os << "the integer " << node.as_integer()->get();
   } else if (node.is_floating_point()) {
-    os << format_number(node.as_floating_point()->get());
+    os << "the float " << float_text(node.as_floating_point()->get());
   } else {
-    os << "a " << node.type();
+    os << "a " << node.type();  // date, time, date-time
   }
   return os.str();
 }
 
 TableReader::TableReader(const toml::table& table, std::string source, std::string section)
     : table_(table), source_(std::move(source)), section_(std::move(section)) {}
+
+void TableReader::check_keys(const std::vector<std::string>& vocabulary) const {
+  for (const auto& [k, node] : table_) {
+    const std::string key(k.str());
+    if (std::find(vocabulary.begin(), vocabulary.end(), key) != vocabulary.end()) continue;
+    const auto close = closest_name(key, vocabulary);
+    std::string msg;
+    if (section_.empty() && node.is_table()) {
+      msg = "unknown section [" + printable(key) + "]" +
+            (close ? " — did you mean [" + *close + "]?"
+                   : " (expected " + list(vocabulary, "[", "]") + ")");
+    } else {
+      msg = "unknown key '" + printable(key) + "' " +
+            (section_.empty() ? "at the top level" : "in [" + section_ + "]") +
+            (close              ? " — did you mean '" + *close + "'?"
+             : section_.empty() ? " (expected the sections " + list(vocabulary, "[", "]") + ")"
+                                : " (expected one of " + list(vocabulary, "", "") + ")");
+    }
+    std::ostringstream at;  // the key's own position
+    at << source_;
+    if (k.source().begin.line > 0)
+      at << ":" << k.source().begin.line << ":" << k.source().begin.column;
+    throw InputError(at.str() + ": " + msg);
+  }
+}
+
+void TableReader::only(const std::vector<std::string>& allowed,
+                       const std::vector<std::string>& vocabulary,
+                       const std::string& reason) const {
+  for (const auto& key : vocabulary) {
+    if (!table_.contains(key) || std::find(allowed.begin(), allowed.end(), key) != allowed.end()) {
+      continue;
+    }
+    std::vector<std::string> takes;
+    for (const auto& a : allowed) {
+      if (a != "kind") takes.push_back(a);
+    }
+    fail(key, "conflicts with " + reason +
+                  (takes.empty() ? std::string() : " (which takes " + list(takes, "", "") + ")"));
+  }
+}
 
 bool TableReader::has(const std::string& key) const {
   known_.insert(key);
@@ -49,6 +118,11 @@ void TableReader::fail(const std::string& key, const std::string& what) const {
   throw InputError(where(table_.get(key)) + ": " + label(key) + ": " + what);
 }
 
+void TableReader::fail_at(const toml::node& node, const std::string& name,
+                          const std::string& what) const {
+  throw InputError(where(&node) + ": " + label(name) + ": " + what);
+}
+
 void TableReader::relocate(const InputError& e) const {
   const std::string msg = e.what();
   const auto colon = msg.find(": ");
@@ -68,29 +142,43 @@ const toml::node& TableReader::require(const std::string& key) {
   return *node;
 }
 
-double TableReader::as_number(const std::string& key, const toml::node& node) const {
-  if (!node.is_number()) fail(key, "expected a number, found " + describe(node));
-  const double x = node.value<double>().value();
-  if (!std::isfinite(x)) fail(key, "expected a finite number, found " + format_number(x));
-  return x;
+double TableReader::element_number(const std::string& key, const toml::node& node,
+                                   const std::string& what) const {
+  const std::string at = what.empty() ? "" : what + ": ";
+  if (const auto* i = node.as_integer()) {
+    const auto d = exact_double(i->get());
+    if (!d) {
+      fail_at(node, key,
+              at + "expected a number that a double holds exactly, found the integer " +
+                  std::to_string(i->get()) + " (the nearest double is " +
+                  float_text(static_cast<double>(i->get())) +
+                  "; write it with a decimal point to accept the rounding)");
+    }
+    return *d;
+  }
+  const auto* f = node.as_floating_point();
+  if (!f) fail_at(node, key, at + "expected a number, found " + describe(node));
+  if (!std::isfinite(f->get())) {
+    fail_at(node, key, at + "expected a finite number, found " + format_number(f->get()));
+  }
+  return f->get();
 }
 
-double TableReader::number(const std::string& key) { return as_number(key, require(key)); }
+double TableReader::number(const std::string& key) { return element_number(key, require(key), ""); }
 
 std::optional<double> TableReader::optional_number(const std::string& key) {
   if (!has(key)) return std::nullopt;
   return number(key);
 }
 
-std::int64_t TableReader::integer(const std::string& key) {
+std::int64_t TableReader::integer(const std::string& key, std::int64_t lo, std::int64_t hi) {
   const toml::node& n = require(key);
-  if (!n.is_integer()) fail(key, "expected an integer, found " + describe(n));
-  return n.as_integer()->get();
-}
-
-std::optional<std::int64_t> TableReader::optional_integer(const std::string& key) {
-  if (!has(key)) return std::nullopt;
-  return integer(key);
+  const auto* i = n.as_integer();
+  if (!i || i->get() < lo || i->get() > hi) {
+    fail(key, "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                  "], found " + describe(n));
+  }
+  return i->get();
 }
 
 bool TableReader::boolean(const std::string& key, bool fallback) {
@@ -117,14 +205,9 @@ Vec3 TableReader::vec3(const std::string& key) {
   if (!a || a->size() != 3) fail(key, "expected an array of 3 numbers, found " + describe(n));
   Vec3 v;
   for (std::size_t i = 0; i < 3; ++i) {
-    const toml::node& e = *a->get(i);
-    if (!e.is_number()) {
-      fail(key, "expected an array of 3 numbers, found element " + std::to_string(i + 1) + " = " +
-                    describe(e));
-    }
-    v[static_cast<Eigen::Index>(i)] = e.value<double>().value();
+    v[static_cast<Eigen::Index>(i)] =
+        element_number(key, *a->get(i), "element " + std::to_string(i + 1));
   }
-  if (!v.allFinite()) fail(key, "expected finite numbers, found " + format_vector(v));
   return v;
 }
 
@@ -141,23 +224,14 @@ std::vector<std::vector<double>> TableReader::rows(const std::string& key, std::
   for (std::size_t r = 0; r < a->size(); ++r) {
     const toml::array* row = a->get(r)->as_array();
     if (!row || (row_length && row->size() != row_length)) {
-      fail(key, "expected row " + std::to_string(r + 1) + " to be an array of " +
+      fail(key, "row " + std::to_string(r + 1) + ": expected an array of " +
                     (row_length ? std::to_string(row_length) + " " : "") + "numbers, found " +
                     describe(*a->get(r)));
     }
     std::vector<double> vals;
     for (std::size_t c = 0; c < row->size(); ++c) {
-      const toml::node& e = *row->get(c);
-      if (!e.is_number()) {
-        fail(key, "expected numbers, found " + describe(e) + " at row " + std::to_string(r + 1) +
-                      ", column " + std::to_string(c + 1));
-      }
-      const double x = e.value<double>().value();
-      if (!std::isfinite(x)) {
-        fail(key, "expected finite numbers, found " + format_number(x) + " at row " +
-                      std::to_string(r + 1) + ", column " + std::to_string(c + 1));
-      }
-      vals.push_back(x);
+      vals.push_back(element_number(
+          key, *row->get(c), "row " + std::to_string(r + 1) + ", column " + std::to_string(c + 1)));
     }
     out.push_back(std::move(vals));
   }
@@ -182,16 +256,12 @@ const toml::table* TableReader::table(const std::string& key) {
   return n.as_table();
 }
 
-void TableReader::finish(const std::vector<std::string>& also_allowed) const {
+void TableReader::finish() const {
   for (const auto& [k, node] : table_) {
     const std::string key(k.str());
-    std::set<std::string> allowed = known_;
-    allowed.insert(also_allowed.begin(), also_allowed.end());
-    if (allowed.count(key)) continue;
-    std::string known;
-    for (const auto& a : allowed) known += (known.empty() ? "" : ", ") + a;
-    throw InputError(where(&node) + ": " + label(key) + ": unknown key" +
-                     (known.empty() ? std::string() : " (expected one of: " + known + ")"));
+    if (!known_.count(key)) {
+      throw InputError(where(&node) + ": " + label(printable(key)) + ": not used by this section");
+    }
   }
 }
 

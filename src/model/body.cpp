@@ -28,10 +28,13 @@ void check_moments(const Vec3& I, const std::string& field) {
                        format_number(I[i]));
     }
   }
-  const double slack = kTriangleSlack * I.sum();
+  // Compared relative to the largest moment, so that no sum overflows (A + B of moments near
+  // 1e308 would pass any test as inf).
+  const Vec3 u = I / I.maxCoeff();
+  const double slack = kTriangleSlack * u.sum();
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
-    if (I[i] + I[j] < I[k] - slack) {
+    if (u[i] + u[j] < u[k] - slack) {
       throw InputError(field + ": triangle inequality " + names[i] + " + " + names[j] +
                        " >= " + names[k] + " fails: " + format_number(I[i]) + " + " +
                        format_number(I[j]) + " < " + format_number(I[k]));

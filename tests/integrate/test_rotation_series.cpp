@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "newtop/integrate/splitting.hpp"
+#include "newtop/integrate/sub_flows.hpp"
 
 namespace newtop {
 namespace {
@@ -21,7 +21,7 @@ TEST(RotationSeries, RoundOffAccurateInEveryBranch) {
       if (i == 0) continue;
       const double theta = range * i / 2000.0;
       double s, cm1;
-      detail::sin_cosm1(theta, s, cm1);
+      sin_cosm1(theta, s, cm1);
       const long double t = theta, half = std::sin(t / 2);
       const long double ref_s = std::sin(t), ref_c = -2 * half * half;
       max_s = std::max(max_s, double(std::fabs((s - ref_s) / ref_s)));

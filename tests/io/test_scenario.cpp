@@ -78,8 +78,9 @@ TEST(Scenario, ValidFileBuildsTheModel) {
 
 TEST(Scenario, UnknownKeyIsNamedWithItsPosition) {
   expect_error(replace(kValid, "mass = 2.0", "mas = 2.0"),
-               {"s.toml:4:", "[body] mas", "unknown key"});
-  expect_error(kValid + "[outptu]\nfile = \"x.csv\"\n", {"outptu", "unknown key"});
+               {"s.toml:4:", "unknown key 'mas' in [body] — did you mean 'mass'?"});
+  expect_error(kValid + "[outptu]\nfile = \"x.csv\"\n",
+               {"unknown section [outptu] — did you mean [output]?"});
 }
 
 TEST(Scenario, WrongTypeAndLength) {
@@ -114,8 +115,13 @@ TEST(Scenario, GammaMustBeUnitUnlessNormalized) {
 
 TEST(Scenario, MalformedTomlAndMissingSections) {
   expect_error("[body\ninertia = [1, 1, 1]\n", {"s.toml:1:", "malformed TOML"});
-  expect_error(replace(kValid, "[initial]", "[initial_state]"), {"initial", "missing"});
-  expect_error(replace(kValid, "R = 6.0", "lambda = 0.5\nR = 6.0"), {"[field]", "exactly one of"});
+  expect_error(replace(kValid, "[initial]", "[initial_state]"),
+               {"unknown section [initial_state]", "[initial]"});
+  expect_error(
+      replace(kValid, "[initial]\nomega = [0.5, 1.1, -0.4]\ngamma = [0.48, -0.6, 0.64]\n", ""),
+      {"missing section [initial]"});
+  expect_error(replace(kValid, "R = 6.0", "lambda = 0.5\nR = 6.0"),
+               {"[field] R: conflicts with lambda", "(g, lambda), (g, R) or (mu, R)"});
 }
 
 TEST(Scenario, UnreadableFile) {
@@ -123,8 +129,8 @@ TEST(Scenario, UnreadableFile) {
     load_scenario("/nonexistent/dir/none.toml");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("/nonexistent/dir/none.toml: cannot read"),
-              std::string::npos);
+    EXPECT_EQ(std::string(e.what()),
+              "/nonexistent/dir/none.toml: scenario file: cannot read it: no such file");
   }
 }
 

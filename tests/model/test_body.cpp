@@ -33,11 +33,14 @@ TEST(Body, RejectsTriangleInequality) {
   }
 }
 
-TEST(Body, AcceptsLimitingRod) {
-  // A thin rod along z about its end: A = B, C = 0 is excluded (C > 0), but a plate A + B = C is
-  // fine.
+TEST(Body, AcceptsFlatPlateWhereTriangleInequalityIsAnEquality) {
+  // A flat plate in the xy plane has A + B = C exactly (the limiting case of the triangle
+  // inequality, spec §1): accepted, also with the round-off of a diagonalisation (the check's
+  // slack is 8 ε tr I = 16 ε C here); a C beyond that slack is no body.
   const Body b = Body::from_principal(Vec3(1, 2, 3), 1, Vec3::Zero());
   EXPECT_EQ(b.C(), 3.0);
+  EXPECT_NO_THROW(Body::from_principal(Vec3(1, 2, 3 * (1 + 4 * kEps)), 1, Vec3::Zero()));
+  EXPECT_THROW(Body::from_principal(Vec3(1, 2, 3 * (1 + 64 * kEps)), 1, Vec3::Zero()), InputError);
 }
 
 TEST(Body, RejectsNonFinite) {

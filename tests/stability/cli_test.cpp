@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 
 #include "newtop/analysis/equilibria.hpp"
@@ -89,6 +91,9 @@ TEST(StabilityCli, StabilityJsonForBeletskySpin) {
   }
   EXPECT_EQ(j["eigenvalues"].size(), 4u);
   EXPECT_TRUE(j["linearly_stable"].get<bool>());
+  // Ω = 1.2 > √λ = 1 about the largest axis: the energy–Casimir function is definite
+  // ((C − A)(Ω² − λ) > 0 and (C − B)(Ω² − λ) > 0, spin_test.cpp), so Lyapunov stable.
+  EXPECT_EQ(j["lyapunov_stable"], true);
   EXPECT_EQ(j["axis_class"], "largest");
   EXPECT_NEAR(j["threshold_omega_numeric"].get<double>(),
               j["threshold_omega_formula"].get<double>(), 1e-9);
@@ -132,6 +137,120 @@ TEST(StabilityCli, BadInputIsOneLineAndExitCodeTwo) {
   r = newtop("stability " + example("rotation_staude_cone.toml") + " --axis z --omega 1");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.out.find("not along the axis"), std::string::npos) << r.out;
+}
+
+TEST(StabilityCli, EquilibriumOptionAnalysesTheListedEquilibrium) {
+  // --equilibrium K is the K-th (1-based) entry of newtop equilibria, whose "index" says K.
+  const std::string file = example("equilibria_newtonian.toml");
+  const auto list = io::Json::parse(newtop("equilibria " + file + " --json").out)["equilibria"];
+  ASSERT_EQ(list.size(), 6u);
+  for (std::size_t k = 1; k <= list.size(); ++k) {
+    const io::Json& e = list[k - 1];
+    EXPECT_EQ(e["index"].get<std::size_t>(), k);
+    const CliResult r = newtop("stability " + file + " --json --equilibrium " + std::to_string(k));
+    ASSERT_EQ(r.code, 0) << r.out;
+    const auto j = io::Json::parse(r.out);
+    EXPECT_EQ(j["equilibrium"].get<std::size_t>(), k);
+    const auto g = j["gamma"].get<std::vector<double>>(),
+               ge = e["gamma"].get<std::vector<double>>();
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(g[i], ge[i], 1e-15) << "K = " << k;
+    EXPECT_EQ(j["omega"], io::Json::parse("[0.0, 0.0, 0.0]"));
+    // At rest: a minimum of V is Lyapunov stable, a saddle or a maximum unstable.
+    const bool minimum = e["type"] == "minimum";
+    EXPECT_EQ(j["linearly_stable"].get<bool>(), minimum) << "K = " << k;
+    EXPECT_EQ(j["lyapunov_stable"], minimum) << "K = " << k;
+  }
+  for (const char* k : {"0", "7"}) {
+    const CliResult r = newtop("stability " + file + " --equilibrium " + k);
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.out.find("--equilibrium: expected 1 to 6 (the equilibria listed by newtop "
+                         "equilibria), found " +
+                         std::string(k)),
+              std::string::npos)
+        << r.out;
+  }
+  CliResult r = newtop("stability " + file + " --equilibrium 1 --axis z");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("--equilibrium: give either --equilibrium or --axis"), std::string::npos);
+}
+
+TEST(StabilityCli, StateCopiedToSevenDigitsIsPolished) {
+  // The second equilibrium of equilibria_newtonian.toml copied to 7 significant digits: its
+  // residual (~1e-7) is far above kFixedPointTolerance; Newton's method restores it and reports
+  // the correction, which is the size of the rounding.
+  const std::string file = example("equilibria_newtonian.toml");
+  const auto e = io::Json::parse(newtop("equilibria " + file + " --json").out)["equilibria"][1];
+  const auto g = e["gamma"].get<std::vector<double>>();
+  char gamma[128];
+  std::snprintf(gamma, sizeof gamma, "[%.7g, %.7g, %.7g]", g[0], g[1], g[2]);
+  const fs::path toml = temp_file("copy.toml");
+  std::ofstream(toml) << "[body]\ninertia = [1.0, 1.6, 2.1]\nmass = 1.0\n"
+                         "center_of_mass = [0.05, -0.03, 0.02]\n"
+                         "[field]\ng = 1.0\nlambda = 1.0\n"
+                         "[initial]\nnormalize = true\nomega = [0.0, 0.0, 0.0]\ngamma = "
+                      << gamma << "\n";
+  CliResult r = newtop("stability " + toml.string() + " --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = io::Json::parse(r.out);
+  const double given = j["polish"]["residual_given"].get<double>();
+  const double correction = j["polish"]["correction"].get<double>();
+  EXPECT_GT(given, kFixedPointTolerance);
+  EXPECT_GT(correction, 1e-10);  // 7 digits: the rounding is up to 5e-7 per component …
+  EXPECT_LT(correction, 1e-6);   // … and so is the correction
+  EXPECT_LE(j["residual"].get<double>(), 64 * std::numeric_limits<double>::epsilon());
+  const auto gp = j["gamma"].get<std::vector<double>>();
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(gp[i], g[i], 1e-14);
+  EXPECT_EQ(j["linearly_stable"], e["type"] == "minimum");
+  // The human summary says so.
+  r = newtop("stability " + toml.string());
+  EXPECT_NE(r.out.find("polished  by Newton's method: correction"), std::string::npos) << r.out;
+  // A tumbling state is refused: no fixed point within kPolishRadius.
+  std::ofstream(toml) << "[body]\ninertia = [1.0, 1.6, 2.1]\nmass = 1.0\n"
+                         "center_of_mass = [0.05, -0.03, 0.02]\n"
+                         "[field]\ng = 1.0\nlambda = 1.0\n"
+                         "[initial]\nomega = [0.1, 0.2, 0.3]\ngamma = [0.6, 0.0, 0.8]\n";
+  r = newtop("stability " + toml.string());
+  fs::remove(toml);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("expected an equilibrium or a permanent rotation"), std::string::npos)
+      << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1);
+}
+
+TEST(StabilityCli, ScanOmegaIsPrintedInTheSummary) {
+  // Without --out or --json the diagram is a table in the summary: a header and one row per Ω.
+  const CliResult r =
+      newtop("stability " + example("stability_beletsky.toml") + " --scan-omega 0:3:7");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto at = r.out.find("Omega                    max real part");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  EXPECT_EQ(std::count(r.out.begin() + static_cast<long>(at), r.out.end(), '\n'), 8) << r.out;
+  // --out without a diagram to write is bad input, not a file silently never written.
+  const CliResult o =
+      newtop("stability " + example("stability_beletsky.toml") + " --out never.csv");
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.out.find("--out: needs --scan-omega or --scan"), std::string::npos) << o.out;
+  EXPECT_FALSE(fs::exists("never.csv"));
+}
+
+TEST(StabilityCli, RequestsBeyondTheDocumentedBoundsAreBadInput) {
+  CliResult r =
+      newtop("rotations " + example("rotation_staude_cone.toml") + " --samples 2000000000");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("samples: expected an integer from 2 to 100000"), std::string::npos)
+      << r.out;
+  r = newtop("stability " + example("stability_beletsky.toml") + " --scan-omega 0:3:2000000000");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("a count from 1 to 100000"), std::string::npos) << r.out;
+  r = newtop("stability " + example("stability_beletsky.toml") +
+             " --scan omega=0:3:10000,C=1:3:1000 --out never.csv");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("--scan: expected at most 1000000 grid points"), std::string::npos) << r.out;
+  // The library enforces the same bounds.
+  const Model m = io::load_scenario(example("rotation_staude_cone.toml")).model;
+  EXPECT_THROW(permanent_rotations(m, kMaxRotationSamples + 1), InputError);
+  EXPECT_NO_THROW(permanent_rotations(m, 2));
+  EXPECT_THROW(scan_omega(m, 2, 0.0, 1.0, kMaxScanPoints + 1), InputError);
 }
 
 TEST(StabilityCli, UniformGravityAndRotorCases) {

@@ -1,11 +1,12 @@
 #pragma once
 /// \file
 /// Which integrable case applies to a model and initial state, and its closed-form or quadrature
-/// solution behind one interface (spec §5, §6, §10).
+/// solution behind one interface (spec §5, §6, §10; Brun's case on the level f = 0).
 
 #include <string>
 #include <variant>
 
+#include "newtop/analysis/brun_case.hpp"
 #include "newtop/analysis/euler_poinsot.hpp"
 #include "newtop/analysis/lagrange_case.hpp"
 #include "newtop/analysis/pendulum.hpp"
@@ -17,16 +18,17 @@ std::string to_string(AnalyticKind k);
 
 struct AnalyticDetection {
   AnalyticKind kind = AnalyticKind::none;
-  std::string reason;  ///< why this case applies, or why none does
+  std::string reason;   ///< why this case applies, or why none does
+  bool solved = false;  ///< analytic_solution is available (Brun: only on the level f = 0)
 };
 
 /// The first case that applies, in the order Euler–Poinsot, plane pendulum, Lagrange, Brun.
 AnalyticDetection detect_analytic_case(const Model& model, const State& x0);
 
-using AnalyticSolution = std::variant<EulerPoinsot, Pendulum, LagrangeCase>;
+using AnalyticSolution = std::variant<EulerPoinsot, Pendulum, LagrangeCase, BrunCase>;
 
-/// The solution of a solved case (euler_poinsot, pendulum, lagrange); throws InputError for brun
-/// or none.
+/// The solution of a solved case (euler_poinsot, pendulum, lagrange, brun on f = 0); throws
+/// InputError for none or an unsolved level.
 AnalyticSolution analytic_solution(const Model& model, const State& x0, AnalyticKind kind);
 
 /// The state at time t.

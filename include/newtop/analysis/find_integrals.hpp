@@ -45,9 +45,16 @@ struct FoundIntegral {
   std::vector<double> coefficients;  ///< over IntegralSearch::monomials
 };
 
+/// The largest condition matrix a search builds, points × monomials entries (2^24 doubles, 128 MiB;
+/// its SVD needs about as much again): at degree 6 (923 monomials) at most 18,176 points, at
+/// degree 2 (27 monomials) 621,378 — far more than the rank decision needs (3 × the monomials).
+inline constexpr std::int64_t kMaxConditionEntries = std::int64_t{1} << 24;
+
 struct SearchOptions {
-  int degree = 2;                 ///< highest total degree D ≥ 1
-  int points = 0;                 ///< random phase points (0: 3 × the number of monomials)
+  int degree = 2;  ///< highest total degree D ≥ 1
+  /// Random phase points (0: 3 × the number of monomials); at most kMaxConditionEntries / the
+  /// number of monomials, else InputError.
+  int points = 0;
   std::uint64_t seed = 20240601;  ///< the points are reproducible for a given seed
   /// Singular values below threshold × the largest count as zero. The columns are scaled to unit
   /// norm, so true null directions give ~1e-15 and genuine ones stay above ~1e-6 in the cases

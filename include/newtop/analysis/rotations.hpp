@@ -46,7 +46,12 @@ struct RotationFamilies {
 /// Relative size below which M g r0, or one of its components, counts as zero.
 inline constexpr double kRotationDegeneracy = 1e-12;
 
-/// The rotation families of spec §8, with the cone sampled at about `samples` points per curve:
+/// Samples per curve at most: the cone has up to four curves, each sampled on both nappes, so
+/// 1e5 samples give at most 8e5 axes (32 MB, a 50 MB CSV), far more than any plot needs.
+inline constexpr int kMaxRotationSamples = 100000;
+
+/// The rotation families of spec §8, with the cone sampled at about `samples` points per curve
+/// (2 ≤ samples ≤ kMaxRotationSamples, otherwise InputError naming the bound):
 /// γ(τ) ∝ (I − τE)⁻¹ r0 for τ ∈ ℝ (each τ a generator, τ → ±∞ gives r0 itself), plus the extra
 /// plane spanned by e_i and (I − I_i E)⁻¹ r0 where x0_i = 0. Throws InputError for a body with a
 /// rotor (k ≠ 0), whose rotations are outside spec §8.

@@ -37,6 +37,30 @@ double fixed_point_residual(const Model& model, const State& s);
 /// significant digits from `newtop equilibria` / `newtop rotations` pass.
 inline constexpr double kFixedPointTolerance = 1e-9;
 
+/// A fixed point given to a few digits (e.g. copied from `newtop equilibria`) is polished by
+/// polish_fixed_point; a correction larger than this (|δγ|, and |δm| relative to |m|) means the
+/// state given was not a fixed point to three digits, and Newton's method may have found another.
+inline constexpr double kPolishRadius = 1e-3;
+
+/// A fixed point recovered from an approximation by polish_fixed_point.
+struct PolishedFixedPoint {
+  State state;                  ///< the polished state (the one given when no step improved it)
+  double residual_given = 0.0;  ///< fixed_point_residual of the state given
+  double residual = 0.0;        ///< fixed_point_residual of `state`
+  /// max(|γ − γ_given|, |m − m_given| / |m_given|) (the second term only when ω_given ≠ 0).
+  double correction = 0.0;
+  int iterations = 0;  ///< Newton steps taken
+  /// residual ≤ kFixedPointTolerance and correction ≤ kPolishRadius.
+  bool converged = false;
+};
+
+/// Newton's method (least-norm Gauss–Newton steps, SVD) for the fixed point of the Euler–Poisson
+/// equations nearest to s (spec §7, §8): rhs(m, γ) = 0 with |γ| = 1. A state at rest (ω = 0) stays
+/// at rest and only γ moves (γ × ∂V/∂γ = 0); otherwise m and γ both move, the step of least norm
+/// in (m/|m|, γ), so that a spin keeps its Ω where the fixed points form a family in Ω. Stops when
+/// the residual (plus ||γ| − 1|) stops decreasing, after at most 50 steps.
+PolishedFixedPoint polish_fixed_point(const Model& model, const State& s);
+
 /// A real part below this fraction of the reduced Jacobian's norm counts as zero. A non-trivial
 /// Jordan block of size 2 (the degenerate spectra at stability boundaries) is resolved by the
 /// eigenvalue solver only to ~sqrt(eps) ≈ 1.5e-8 relative; 1e-6 stays clear of that.

@@ -59,7 +59,12 @@ struct ScanPoint {
   std::optional<bool> lyapunov_stable;
 };
 
-/// Stability along Ω ∈ [w1, w2] at n ≥ 2 equally spaced points (n = 1: w1 only).
+/// Points of scan_omega at most: 1e5 eigenvalue problems take well under a second, and their JSON
+/// list is ~10 MB.
+inline constexpr int kMaxScanPoints = 100000;
+
+/// Stability along Ω ∈ [w1, w2] at n ≥ 2 equally spaced points (n = 1: w1 only), n ≤
+/// kMaxScanPoints; throws InputError otherwise or for a non-finite end.
 std::vector<ScanPoint> scan_omega(const Model& model, int axis, double w1, double w2, int n);
 
 }  // namespace newtop

@@ -19,7 +19,8 @@ class InputError : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
-/// Formats a number with enough digits to round-trip (17 significant digits, shortest form).
+/// Formats a number with enough digits to round-trip (17 significant digits, shortest form); −0 is
+/// written as 0 (the sign of a zero carries no information in any of newtop's outputs).
 std::string format_number(double x);
 
 /// Formats a vector as `[x, y, z]` with format_number.

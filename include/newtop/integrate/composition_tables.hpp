@@ -1,8 +1,10 @@
 #pragma once
 /// \file
-/// Symmetric composition methods as data: Ψ_h = Φ_{γ_s h} ∘ … ∘ Φ_{γ_1 h} of a symmetric
-/// second-order base method Φ raises the order to 4, 6 or 8 (Hairer, Lubich & Wanner, Geometric
-/// Numerical Integration, 2nd ed., §V.3). Each table cites its source.
+/// Splitting methods as data. Symmetric compositions Ψ_h = Φ_{γ_s h} ∘ … ∘ Φ_{γ_1 h} of a symmetric
+/// second-order base method Φ raise the order to 4, 6 or 8 (Hairer, Lubich & Wanner, Geometric
+/// Numerical Integration, 2nd ed., §V.3). Near-integrable splittings of H = H_free + V, whose error
+/// is O(ε h^p + ε² h^q) when V = O(ε), give the step K(b₀h) F(a₁h) K(b₁h) … F(a_s h) K(b_s h)
+/// directly, F the exact free-body flow and K the kick. Each table cites its source.
 
 #include <span>
 #include <string_view>
@@ -11,16 +13,25 @@
 namespace newtop {
 
 struct CompositionTable {
-  std::string_view name;       ///< method name as used by the command line
-  int order;                   ///< order of the composition of a symmetric order-2 base
-  std::vector<double> gamma;   ///< all s stage coefficients γ_1 … γ_s (Σγ_i = 1)
+  std::string_view name;      ///< method name as used by the command line
+  int order;                  ///< order of the composition of a symmetric order-2 base
+  std::vector<double> gamma;  ///< compositions: all s stage coefficients γ_1 … γ_s (Σγ_i = 1)
   std::string_view reference;  ///< where the coefficients were published
+  /// Near-integrable splittings (empty for compositions): the free-body flows a_1 … a_s and the
+  /// kicks b_0 … b_s (Σa_i = Σb_i = 1; b_0 = b_s = 0 for a method that starts with a flow).
+  std::vector<double> a = {};
+  std::vector<double> b = {};
 };
 
 /// Every table newtop ships, lowest order first.
 std::span<const CompositionTable> composition_tables();
 
-/// The table with this name; throws InputError listing the known names if there is none.
+/// Near-integrable splittings of H = H_free + V for the exact free-body flow (SABA_n, SBAB_n of
+/// Laskar & Robutel; ABA(8,6,4), ABA(10,6,4) of Blanes et al.), measured in docs/performance.md.
+std::span<const CompositionTable> near_integrable_tables();
+
+/// The table with this name (either list); throws InputError listing the known names if there is
+/// none.
 const CompositionTable& composition_table(std::string_view name);
 
 }  // namespace newtop

@@ -15,14 +15,21 @@ concept FixedStepper = requires(S s, const S cs, const M& model, State& x, doubl
   s.step(model, x, h);
 };
 
+/// Adaptive methods: a trial step that gives NaN or inf is rejected and retried this much shorter
+/// (the largest decrease odeint's step controller applies to a rejected step).
+inline constexpr double kNonFiniteShrink = 0.2;
+
 /// An adaptive (error-controlled) method: `try_step(model, x, t, dt)` attempts a step of dt from
 /// (t, x); on success it advances x and t and returns true; on failure it leaves them and returns
-/// false. In both cases dt is replaced by the suggested next step.
+/// false. In both cases dt is replaced by the suggested next step. `initial_step(model, x, t0, t1)`
+/// is a first trial step |h| > 0 estimated from the problem (the right-hand side, the state and
+/// the tolerances), never from the span alone.
 template <class S, class M>
 concept AdaptiveStepper = requires(S s, const S cs, const M& model, State& x, double& t,
                                    double& dt) {
   { cs.order() } -> std::convertible_to<int>;
   { s.try_step(model, x, t, dt) } -> std::same_as<bool>;
+  { s.initial_step(model, x, t, t) } -> std::convertible_to<double>;
 };
 
 }  // namespace newtop

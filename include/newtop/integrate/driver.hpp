@@ -1,13 +1,18 @@
 #pragma once
 /// \file
 /// The one driver: integrate(stepper, model, state, t0, t1, options, observer) -> Outcome.
-/// Observers record; they are called at t0 and after every accepted step with (t, state).
+/// Observers record; they are called at t0 and after every accepted step with (t, state). An
+/// observer that also takes a third argument receives, with adaptive methods, the accepted step's
+/// continuous extension (a DenseStep, dense_output.hpp): output at requested times and event
+/// location are observers of that kind (output_times.hpp), not stepper features.
 
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include "newtop/integrate/concepts.hpp"
+#include "newtop/integrate/dense_output.hpp"
 #include "newtop/integrate/outcome.hpp"
 
 namespace newtop {
@@ -16,7 +21,8 @@ struct IntegrateOptions {
   /// Fixed-step methods: the nominal step h > 0. The run takes n = ceil((t1 − t0)/h) equal steps
   /// of (t1 − t0)/n, so that it ends exactly at t1; t_n = t0 + n h is computed, never accumulated.
   double step = 0.0;
-  /// Adaptive methods: first trial step (0: |t1 − t0| / 1000).
+  /// Adaptive methods: first trial step (0: the stepper's estimate from the problem,
+  /// AdaptiveStepper::initial_step).
   double initial_step = 0.0;
   /// Adaptive methods: a trial or accepted step below min_step_factor · max(|t|, |t1 − t0|) is an
   /// underflow: finishing would take over 1e12 steps, or the tolerance is below what round-off
@@ -26,6 +32,25 @@ struct IntegrateOptions {
   std::int64_t max_steps = 1'000'000'000;
 };
 
+/// The largest number of steps a run may take: 2^53, beyond which the step index is no longer an
+/// exact double and t0 + i·h would repeat times.
+inline constexpr double kMaxStepCount = 9007199254740992.0;
+
+/// Throws InputError unless t0, t1 and t1 − t0 are finite (`t0`/`t_end`: expected a finite time).
+void check_time_span(double t0, double t1);
+
+/// The number n = ceil(|t1 − t0| / h) of equal steps of a fixed-step run. Throws InputError for a
+/// step that is not a finite number > 0, for non-finite times, and for a count beyond
+/// kMaxStepCount (the message gives the count).
+std::int64_t fixed_step_count(double t0, double t1, double step);
+
+/// Throws InputError for options no run can use (negative or non-finite initial_step,
+/// min_step_factor outside (0, 1), max_steps < 1).
+void check_options(const IntegrateOptions& opt);
+
+/// Throws InputError naming m or gamma when the state is not finite.
+void check_state(const State& x);
+
 /// An observer that records nothing.
 struct NoObserver {
   void operator()(double, const State&) const {}
@@ -33,52 +58,82 @@ struct NoObserver {
 
 inline bool is_finite(const State& s) { return s.m.allFinite() && s.gamma.allFinite(); }
 
-/// Fixed-step driver.
+namespace detail {
+
+/// Calls observer(t, x, step) when the observer takes the step, observer(t, x) otherwise.
+template <class Obs, class Step>
+void notify(Obs& observer, double t, const State& x, const Step& step) {
+  if constexpr (std::is_invocable_v<Obs&, double, const State&, const Step&>) {
+    observer(t, x, step);
+  } else {
+    observer(t, x);
+  }
+}
+
+/// n equal steps from (t0, x) to t1 (the last one lands exactly on t1), continuing the counts in
+/// `out`. Returns false when the run stopped (non-finite state or step limit; `out` says which).
+template <class S, class M, class Obs>
+bool fixed_steps(S& stepper, const M& model, State& x, double t0, double t1, std::int64_t n,
+                 const IntegrateOptions& opt, Outcome& out, Obs& observer) {
+  const double h = (t1 - t0) / static_cast<double>(n);
+  for (std::int64_t i = 1; i <= n; ++i) {
+    if (out.steps >= opt.max_steps) {
+      out.status = Status::step_limit;
+      return false;
+    }
+    stepper.step(model, x, h);
+    const double t = (i == n) ? t1 : t0 + static_cast<double>(i) * h;
+    if (!is_finite(x)) {
+      out.status = Status::non_finite;  // out keeps the last finite state and its time
+      return false;
+    }
+    out.t = t;
+    out.state = x;
+    ++out.steps;
+    out.last_step = h;
+    observer(t, x);
+  }
+  return true;
+}
+
+}  // namespace detail
+
+/// Fixed-step driver. Throws InputError for non-finite times or state, a step that is not a finite
+/// number > 0, or a step count beyond kMaxStepCount.
 template <class S, Field F, class Obs = NoObserver>
 requires FixedStepper<S, BasicModel<F>> Outcome integrate(S& stepper, const BasicModel<F>& model,
                                                           State x, double t0, double t1,
                                                           const IntegrateOptions& opt,
                                                           Obs&& observer = {}) {
+  check_options(opt);
+  check_state(x);
+  const std::int64_t n = fixed_step_count(t0, t1, opt.step);
   Outcome out{Status::finished, t0, x, 0, 0, 0.0};
   observer(t0, x);
-  const double span = t1 - t0;
-  if (span == 0.0) return out;
-  const double n_real = std::ceil(std::abs(span) / opt.step);
-  const auto n = static_cast<std::int64_t>(n_real);
-  const double h = span / n_real;
-  for (std::int64_t i = 1; i <= n; ++i) {
-    if (out.steps >= opt.max_steps) {
-      out.status = Status::step_limit;
-      return out;
-    }
-    stepper.step(model, x, h);
-    if (!is_finite(x)) {
-      out.status = Status::non_finite;
-      out.t = t0 + static_cast<double>(i) * h;
-      return out;
-    }
-    const double t = (i == n) ? t1 : t0 + static_cast<double>(i) * h;
-    out.t = t;
-    out.state = x;
-    out.steps = i;
-    out.last_step = h;
-    observer(t, x);
-  }
+  if (n > 0) detail::fixed_steps(stepper, model, x, t0, t1, n, opt, out, observer);
   return out;
 }
 
-/// Adaptive driver: the last step is shortened to land exactly on t1.
+/// Adaptive driver: the first trial step is the stepper's estimate from the problem (or
+/// opt.initial_step), a trial that gives NaN or inf is rejected and retried kNonFiniteShrink times
+/// shorter (only an accepted state counts; a run whose trials keep failing ends in
+/// step_size_underflow), and the last step is shortened to land exactly on t1. Throws InputError as
+/// the fixed-step driver does for bad times, state or options.
 template <class S, Field F, class Obs = NoObserver>
 requires AdaptiveStepper<S, BasicModel<F>> Outcome integrate(S& stepper, const BasicModel<F>& model,
                                                              State x, double t0, double t1,
                                                              const IntegrateOptions& opt,
                                                              Obs&& observer = {}) {
+  check_time_span(t0, t1);
+  check_options(opt);
+  check_state(x);
   Outcome out{Status::finished, t0, x, 0, 0, 0.0};
-  observer(t0, x);
+  detail::notify(observer, t0, x, DenseStep<S, BasicModel<F>>{stepper, model, t0, t0, x});
   const double span = t1 - t0;
   if (span == 0.0) return out;
   const double dir = span > 0 ? 1.0 : -1.0;
-  double dt = opt.initial_step > 0 ? dir * opt.initial_step : span / 1000.0;
+  double dt =
+      dir * (opt.initial_step > 0 ? opt.initial_step : stepper.initial_step(model, x, t0, t1));
   double t = t0;
   while (dir * (t1 - t) > 0) {
     if (out.steps + out.rejected >= opt.max_steps) {
@@ -91,33 +146,30 @@ requires AdaptiveStepper<S, BasicModel<F>> Outcome integrate(S& stepper, const B
       last = true;
     }
     const double scale = std::max(std::abs(t), std::abs(span));
-    if (std::abs(dt) < opt.min_step_factor * scale) {
+    if (!(std::abs(dt) >= opt.min_step_factor * scale)) {
       out.status = Status::step_size_underflow;
       return out;
     }
     State trial = x;
     double t_trial = t;
     const double dt_tried = dt;
-    if (!stepper.try_step(model, trial, t_trial, dt)) {
+    const bool accepted = stepper.try_step(model, trial, t_trial, dt);
+    // A non-finite trial is a rejected step, retried shorter, whatever the stepper said (an error
+    // estimate of NaN passes a controller that tests err > 1).
+    const bool non_finite = accepted && !is_finite(trial);
+    if (!accepted || non_finite) {
+      if (non_finite || !std::isfinite(dt)) dt = kNonFiniteShrink * dt_tried;
       ++out.rejected;
       continue;
     }
-    if (!is_finite(trial)) {
-      out.status = Status::non_finite;
-      out.t = t_trial;
-      return out;
-    }
-    if (std::abs(dt_tried) < opt.min_step_factor * scale) {
-      out.status = Status::step_size_underflow;
-      return out;
-    }
+    const double t_old = t;
     x = trial;
     t = last ? t1 : t_trial;
     ++out.steps;
     out.t = t;
     out.state = x;
     out.last_step = dt_tried;
-    observer(t, x);
+    detail::notify(observer, t, x, DenseStep<S, BasicModel<F>>{stepper, model, t_old, t, x});
   }
   return out;
 }

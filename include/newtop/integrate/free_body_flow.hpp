@@ -2,12 +2,12 @@
 /// \file
 /// The exact flow of the free rigid body H = ½ m·I⁻¹m (Euler–Poinsot, spec §4), and a splitting
 /// stepper that uses it as a sub-flow: free body + potential kick. The angular momentum m(t) is
-/// given by Jacobi elliptic functions (Boost.Math) and the attitude γ(t) by Euler angles about the
-/// (space-fixed) angular momentum, the precession angle by quadrature of its rate.
-
-#include <vector>
+/// given by Jacobi elliptic functions and the attitude γ(t) by Euler angles about the (space-fixed)
+/// angular momentum, the precession angle in closed form through the elliptic integral of the
+/// third kind (Carlson's R_F and R_J; Boost.Math in double precision throughout).
 
 #include "newtop/integrate/composition_tables.hpp"
+#include "newtop/integrate/splitting.hpp"
 #include "newtop/model/model.hpp"
 
 namespace newtop {
@@ -21,6 +21,14 @@ namespace newtop {
 ///   ν = σ3 sgn(C − B) √((C − B)(L² − 2EA)/(ABC)), k² = (B − A)(2EC − L²) / ((C − B)(L² − 2EA)),
 /// with L = |m| and 2E = m·I⁻¹m (Landau & Lifshitz, Mechanics §37). When m × ω = 0 (rotation about
 /// a principal axis, a sphere, or rest) the motion is a permanent rotation and m is constant.
+///
+/// Precession about m with the body axis p as pole: dφ/dt = L (2E − m_p²/I_p)/(L² − m_p²), where
+/// L² − m_p² = c (1 − n sn²u) for constants c > 0 and n < 1, so that
+///   φ(t) − φ(0) = (2E − L²/I_p) L t/c + L/I_p t + (L (2E − L²/I_p)/(c ν)) (ΔΠ − ν t),
+/// with ΔΠ = Π(n; am u, k) − Π(n; am u0, k) (Celledoni, Fassò, Säfström & Zanna, SIAM J. Sci.
+/// Comput. 30 (2008) 2084). With Carlson's form Π(n; φ) = F(φ) + (n/3) sin³φ R_J(cos²φ, dn²,
+/// 1, 1 − n sin²φ) for |φ| ≤ π/2, F(am u) = u and Π(n; φ + jπ) = Π(n; φ) + 2jΠ(n), only R_J at the
+/// two ends (and the complete R_J when u crosses a half period) is needed.
 struct EulerPoinsot {
   Vec3 inertia;                   ///< (A, B, C) of the body, body frame
   State initial;                  ///< state at t = 0
@@ -33,6 +41,14 @@ struct EulerPoinsot {
   double u0 = 0.0;                ///< argument at t = 0
   double period = 0.0;            ///< period of m(t), 4K(k)/|ν| (∞ for a permanent rotation)
   int pole = 2;                   ///< body axis used as the pole of the Euler angles
+  double momentum_norm = 0.0;     ///< |m|, an invariant of the motion
+  double quarter = 0.0;           ///< K(k) (∞ on the separatrix)
+  double characteristic = 0.0;    ///< n of Π(n; φ, k)
+  double mean_rate = 0.0;         ///< L/I_p + L (2E − L²/I_p)/c
+  double third_kind_scale = 0.0;  ///< L (2E − L²/I_p) n / (3 c ν)
+  double third_kind_start = 0.0;  ///< sin³φ R_J(…) at the start, reduced to |φ| ≤ π/2
+  int half_periods_start = 0;     ///< u0 = u0r + 2 j K with |u0r| ≤ K: this j
+  Mat3 euler_start = Mat3::Identity();  ///< the Euler frame of the initial m
 };
 
 /// The free motion from x0. Throws InputError if the body carries a gyrostatic moment (k ≠ 0) or x0
@@ -42,46 +58,29 @@ EulerPoinsot euler_poinsot(const Body& body, const State& x0);
 /// m(t) = Iω(t), exact (Jacobi elliptic functions).
 Vec3 angular_momentum(const EulerPoinsot& s, double t);
 
-/// The full state (m(t), γ(t)): γ(t) from the Euler angles about the fixed angular momentum, the
-/// precession angle φ(t) = ∫ |m| (m_a²/I_a + m_b²/I_b)/(m_a² + m_b²) dt by Gauss–Kronrod quadrature
-/// ((a, b, pole) cyclic).
+/// The full state (m(t), γ(t)): γ(t) from the Euler angles about the fixed angular momentum and the
+/// precession angle φ(t) − φ(0) = ∫ |m| (m_a²/I_a + m_b²/I_b)/(m_a² + m_b²) dt ((a, b, pole)
+/// cyclic), in closed form.
 State free_body_state(const EulerPoinsot& s, double t);
 
-/// The precession angle φ(t) − φ(0) about the angular momentum (0 for a permanent rotation): whole
-/// periods by the trapezoidal rule (geometric convergence for a periodic integrand), the rest by
-/// adaptive Gauss–Kronrod.
+/// The precession angle φ(t) − φ(0) about the angular momentum (0 for a permanent rotation).
 double precession_angle(const EulerPoinsot& s, double t);
+
+/// Its rate dφ/dt = |m| (m_a²/I_a + m_b²/I_b)/(m_a² + m_b²) at the angular momentum m.
+double precession_rate(const EulerPoinsot& s, const Vec3& m);
 
 /// Exact free-body flow over time h: free_body_state(euler_poinsot(body, x), h).
 State free_body_flow(const Body& body, const State& x, double h);
 
 /// Splitting of H = ½ m·I⁻¹m + V(γ) into the exact free-body flow F and the potential kick K
 /// (m += h γ × ∂V/∂γ): the symmetric base K(h/2) F(h) K(h/2), composed to order 4, 6 or 8 by a
-/// CompositionTable. Both sub-flows are Poisson maps preserving γ·γ and m·γ, so every composition
-/// is a Poisson integrator; it is exact for the free body (V = 0). Needs k = 0 (the step throws
-/// InputError otherwise).
-class FreeBodySplittingStepper {
+/// CompositionTable, or a near-integrable table's own steps. Both sub-flows are Poisson maps
+/// preserving γ·γ and m·γ, so every composition is a Poisson integrator; it is exact for the free
+/// body (V = 0). Needs k = 0 (the step throws InputError otherwise).
+class FreeBodySplittingStepper : public SplittingStepper {
  public:
-  explicit FreeBodySplittingStepper(const CompositionTable& table);
-
-  int order() const { return order_; }
-  /// Sub-flows per step (kicks + free-body flows).
-  std::size_t stages() const { return program_.size(); }
-
-  template <Field F>
-  void step(const BasicModel<F>& model, State& x, double h) {
-    for (const auto& [kick, fraction] : program_) {
-      if (kick) {
-        x.m += fraction * h * x.gamma.cross(grad_gamma(model, x.gamma));
-      } else {
-        x = free_body_flow(model.body, x, fraction * h);
-      }
-    }
-  }
-
- private:
-  int order_;
-  std::vector<std::pair<bool, double>> program_;  // (is a kick, fraction of h)
+  explicit FreeBodySplittingStepper(const CompositionTable& table)
+      : SplittingStepper(table, SplitOrdering{{0, 1, 2}, true, false, FreeBodySplit::exact}) {}
 };
 
 }  // namespace newtop

@@ -12,8 +12,9 @@ namespace newtop {
 /// How an integration ended. Expected numerical outcomes are returned, never thrown.
 enum class Status {
   finished,             ///< reached t1
-  non_finite,           ///< a step produced NaN or inf; integration stopped at once
-  step_size_underflow,  ///< the adaptive step fell below the smallest admissible step
+  non_finite,           ///< a fixed step produced NaN or inf; integration stopped at once
+  step_size_underflow,  ///< the adaptive step fell below the smallest admissible step (also when
+                        ///< every trial down to it gave NaN or inf: those are rejected steps)
   step_limit,           ///< the maximum number of steps was taken before t1
 };
 
@@ -21,8 +22,8 @@ std::string_view to_string(Status s);
 
 struct Outcome {
   Status status = Status::finished;
-  double t = 0.0;             ///< time reached (the last finite state's time)
-  State state;                ///< the last finite state
+  double t = 0.0;             ///< time reached: the time of `state`
+  State state;                ///< the last accepted (finite) state
   std::int64_t steps = 0;     ///< accepted steps
   std::int64_t rejected = 0;  ///< rejected trial steps (adaptive methods)
   double last_step = 0.0;     ///< size of the last accepted step

@@ -2,9 +2,14 @@
 /// \file
 /// Runge–Kutta methods through Boost.Odeint on the Euler–Poisson right-hand side (spec §4):
 /// classical RK4 (fixed step, the baseline) and the embedded pairs Dormand–Prince 5(4) and
-/// Fehlberg 7(8) with absolute and relative tolerances.
+/// Fehlberg 7(8) with absolute and relative tolerances, each with a continuous extension (dense
+/// output) of its accepted steps.
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
 // Odeint's steppers copy their (not yet sized) scratch arrays on construction, which GCC 12 flags
 // as uninitialized use inside Boost's headers; silence that for Boost's lines only.
 #if defined(__GNUC__) && !defined(__clang__)
@@ -22,6 +27,8 @@
 #pragma GCC diagnostic pop
 #endif
 
+#include "newtop/integrate/concepts.hpp"
+#include "newtop/integrate/dense_output.hpp"
 #include "newtop/model/model.hpp"
 
 namespace newtop {
@@ -65,29 +72,157 @@ class OdeintFixedStepper {
 /// Classical fourth-order Runge–Kutta, fixed step (odeint's runge_kutta4): the baseline.
 using Rk4Stepper = OdeintFixedStepper<boost::numeric::odeint::runge_kutta4<OdeState>, 4>;
 
+namespace detail {
+
+/// The starting step of Hairer, Nørsett & Wanner, Solving ODEs I, §II.4 (their codes' HINIT): with
+/// the weights sc_i = abs_tol + rel_tol |y0_i| and the RMS norm, d0 = ‖y0‖, d1 = ‖f(y0)‖, an Euler
+/// step h0 = 0.01 d0/d1, d2 = ‖f(y0 + h0 f(y0)) − f(y0)‖ / h0 (a second-derivative estimate), and
+/// h = min(100 h0, (0.01 / max(d1, d2))^(1/order)), never beyond |span|.
+template <class Sys>
+double starting_step(const Sys& sys, const OdeState& y0, const OdeState& f0, double t0, double span,
+                     double abs_tol, double rel_tol, int order) {
+  auto rms = [&](const auto& term) {
+    double s = 0;
+    for (std::size_t i = 0; i < y0.size(); ++i) {
+      const double v = term(i) / (abs_tol + rel_tol * std::abs(y0[i]));
+      s += v * v;
+    }
+    return std::sqrt(s / static_cast<double>(y0.size()));
+  };
+  const double d0 = rms([&](std::size_t i) { return y0[i]; });
+  const double d1 = rms([&](std::size_t i) { return f0[i]; });
+  double h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
+  h0 = std::min(h0, std::abs(span));
+  const double dir = span < 0 ? -1.0 : 1.0;
+  OdeState y1, f1;
+  for (std::size_t i = 0; i < y0.size(); ++i) y1[i] = y0[i] + dir * h0 * f0[i];
+  sys(y1, f1, t0 + dir * h0);
+  const double d2 = rms([&](std::size_t i) { return f1[i] - f0[i]; }) / h0;
+  if (!std::isfinite(d2)) return h0;
+  const double d = std::max(d1, d2);
+  const double h1 = d <= 1e-15 ? std::max(1e-6, h0 * 1e-3) : std::pow(0.01 / d, 1.0 / order);
+  return std::min({100 * h0, h1, std::abs(span)});
+}
+
+inline bool all_finite(const OdeState& y) {
+  return std::all_of(y.begin(), y.end(), [](double v) { return std::isfinite(v); });
+}
+
+}  // namespace detail
+
 /// An embedded Runge–Kutta pair with odeint's standard error control:
-/// err_i / (abs_tol + rel_tol (|y_i| + h |y'_i|)) ≤ 1 in the max norm.
+/// err_i / (abs_tol + rel_tol (|y_i| + h |y'_i|)) ≤ 1 in the max norm. A non-finite trial is
+/// rejected (odeint's controller would accept an error estimate of NaN) and retried
+/// kNonFiniteShrink times shorter. After an accepted step, dense_state(model, t) is the method's
+/// continuous extension inside it: Dormand–Prince's own (order 4, odeint's calc_state); for
+/// Fehlberg 7(8), which has none, the Hermite interpolant of degree 7 (HermiteInterpolant) on the
+/// nodes θ = 0, 1/3, 2/3, 1 of the step, the inner values from steps of θh of the same formula from
+/// the step's start (built on first use: 26 more evaluations of f per interpolated step; error
+/// O(h^8), the order of the pair's error estimate).
 template <class ErrorStepper, int Order>
 class EmbeddedRkStepper {
+  static constexpr bool kFsal =
+      std::is_same_v<typename ErrorStepper::stepper_category,
+                     boost::numeric::odeint::explicit_error_stepper_fsal_tag>;
+
  public:
   EmbeddedRkStepper(double abs_tol, double rel_tol)
-      : controlled_(boost::numeric::odeint::make_controlled(abs_tol, rel_tol, ErrorStepper())) {}
+      : abs_tol_(abs_tol),
+        rel_tol_(rel_tol),
+        controlled_(boost::numeric::odeint::make_controlled(abs_tol, rel_tol, ErrorStepper())) {}
 
   int order() const { return Order; }
 
   template <Field F>
+  double initial_step(const BasicModel<F>& model, const State& x, double t0, double t1) {
+    const OdeSystem<F> sys{&model};
+    at_point(sys, to_ode(x), t0);
+    return detail::starting_step(sys, y_, dydt_, t0, t1 - t0, abs_tol_, rel_tol_, Order);
+  }
+
+  template <Field F>
   bool try_step(const BasicModel<F>& model, State& x, double& t, double& dt) {
-    OdeState y = to_ode(x);
-    const auto r = controlled_.try_step(OdeSystem<F>{&model}, y, t, dt);
-    if (r == boost::numeric::odeint::success) {
-      x = from_ode(y);
-      return true;
+    const OdeSystem<F> sys{&model};
+    at_point(sys, to_ode(x), t);
+    OdeState y_new, dydt_new;
+    const double t_old = t, dt_tried = dt;
+    boost::numeric::odeint::controlled_step_result r;
+    if constexpr (kFsal) {
+      r = controlled_.try_step(sys, y_, dydt_, t, y_new, dydt_new, dt);
+    } else {
+      r = controlled_.try_step(sys, y_, dydt_, t, y_new, dt);
     }
-    return false;
+    if (r != boost::numeric::odeint::success) return false;
+    if (!detail::all_finite(y_new)) {
+      t = t_old;
+      dt = kNonFiniteShrink * dt_tried;
+      return false;
+    }
+    last_ = {t_old, t, y_, dydt_, y_new, dydt_new};
+    ++step_id_;
+    y_ = y_new;
+    dydt_ = dydt_new;
+    has_dydt_ = kFsal;  // Fehlberg 7(8): f(y_new) is computed when first needed
+    x = from_ode(y_new);
+    return true;
+  }
+
+  /// The continuous extension of the last accepted step at t (between its ends).
+  template <Field F>
+  State dense_state(const BasicModel<F>& model, double t) {
+    OdeState y;
+    if constexpr (kFsal) {
+      controlled_.stepper().calc_state(t, y, last_.y_old, last_.dydt_old, last_.t_old, last_.y_new,
+                                       last_.dydt_new, last_.t_new);
+    } else {
+      if (hermite_id_ != step_id_) build_hermite(OdeSystem<F>{&model});
+      y = hermite_((t - last_.t_old) / (last_.t_new - last_.t_old));
+    }
+    return from_ode(y);
   }
 
  private:
+  struct AcceptedStep {
+    double t_old = 0, t_new = 0;
+    OdeState y_old{}, dydt_old{}, y_new{}, dydt_new{};
+  };
+
+  /// Makes (y_, dydt_) the point y and its derivative, evaluating f only for a new point.
+  template <class Sys>
+  void at_point(const Sys& sys, const OdeState& y, double t) {
+    if (has_dydt_ && y == y_) return;
+    y_ = y;
+    sys(y_, dydt_, t);
+    has_dydt_ = true;
+  }
+
+  template <class Sys>
+  void build_hermite(const Sys& sys) {
+    AcceptedStep& s = last_;
+    const double h = s.t_new - s.t_old;
+    at_point(sys, s.y_new, s.t_new);  // shared with the next step's first stage
+    s.dydt_new = dydt_;
+    constexpr std::array<double, 4> theta{0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0};
+    std::array<OdeState, 4> y{s.y_old, {}, {}, s.y_new}, f{s.dydt_old, {}, {}, s.dydt_new};
+    for (int i = 1; i <= 2; ++i) {
+      partial_.do_step(sys, s.y_old, s.dydt_old, s.t_old, y[i], theta[i] * h);
+      sys(y[i], f[i], s.t_old + theta[i] * h);
+    }
+    for (auto& fi : f) {
+      for (double& v : fi) v *= h;
+    }
+    hermite_ = HermiteInterpolant(theta, y, f);
+    hermite_id_ = step_id_;
+  }
+
+  double abs_tol_, rel_tol_;
   typename boost::numeric::odeint::result_of::make_controlled<ErrorStepper>::type controlled_;
+  OdeState y_{}, dydt_{};  // the current point and f there (when has_dydt_)
+  bool has_dydt_ = false;
+  AcceptedStep last_;
+  std::int64_t step_id_ = 0, hermite_id_ = -1;
+  ErrorStepper partial_;  // Fehlberg 7(8): the inner nodes of the interpolant
+  HermiteInterpolant hermite_;
 };
 
 /// Dormand–Prince 5(4) (odeint's runge_kutta_dopri5), order 5.

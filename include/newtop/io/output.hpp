@@ -4,6 +4,7 @@
 
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,11 @@ using Json = nlohmann::ordered_json;
 /// destroyed without commit() it removes the temporary, so no half-written file is ever left.
 class AtomicFile {
  public:
-  explicit AtomicFile(std::string path);
+  /// Opens the temporary at once, so that an output that cannot be created is found before any
+  /// work: throws InputError for an empty name, a name that is a directory or an existing file
+  /// that is not a regular file (a device, a FIFO), a name that is one of `inputs` (the same file
+  /// under any name), and a folder where the temporary cannot be created.
+  explicit AtomicFile(std::string path, std::span<const std::string> inputs = {});
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;

@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "newtop/exact/mass_models.hpp"
 #include "newtop/integrate/methods.hpp"
@@ -26,6 +27,8 @@ struct IntegrateSection {
 struct OutputSection {
   std::optional<std::string> file;
   std::int64_t every = 1;
+  /// Rows at t0 + k·dt instead of every `every`-th step (finite, > 0; not with `every`).
+  std::optional<double> dt;
 };
 
 /// Which field a run uses: the quadratic model of spec §3, the exact field of spec §2, or its
@@ -50,6 +53,9 @@ struct Scenario {
   IntegrateSection integrate;
   OutputSection output;
   ExactSettings exact;  ///< model.field is the quadratic field of the same μ and R
+  /// Every file the scenario was read from: the scenario itself and a [mass_model] file (an output
+  /// must never replace one of them).
+  std::vector<std::string> input_files;
 };
 
 /// Reads and validates a scenario file. Throws InputError with a one-line message

@@ -49,4 +49,14 @@ inline Vec3 moment(const Body& body, const QuadraticField& field, const Vec3& ga
   return gamma.cross(grad_gamma(body, field, gamma));
 }
 
+/// Jacobian of the moment, ∂L/∂γ = [γ]× λI − [M g r0 + λ Iγ]× ([v]× the matrix of v × ·).
+inline Mat3 moment_jacobian(const Body& body, const QuadraticField& field, const Vec3& gamma) {
+  auto cross = [](const Vec3& v) {
+    Mat3 m;
+    m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+    return m;
+  };
+  return cross(gamma) * hessian_gamma(body, field, gamma) - cross(grad_gamma(body, field, gamma));
+}
+
 }  // namespace newtop

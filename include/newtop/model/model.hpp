@@ -56,10 +56,23 @@ Vec3 grad_gamma(const BasicModel<F>& model, const Vec3& gamma) {
   return grad_gamma(model.body, model.field, gamma);
 }
 
-/// Moment about O, L = γ × ∂V/∂γ (spec §2), for any field.
+/// A field with its own moment(body, field, γ) (found by ADL): one formed without the
+/// cancellation of γ × ∂V/∂γ, whose normal part can exceed the moment by (R/r)² far from the body
+/// (newtop/exact/exact_field.hpp).
+template <class F>
+concept FieldWithMoment = Field<F> && requires(const Body& b, const F& f, const Vec3& g) {
+  { moment(b, f, g) } -> std::convertible_to<Vec3>;
+};
+
+/// Moment about O, L = γ × ∂V/∂γ (spec §2), for any field: the field's own moment where it has
+/// one, the cross product otherwise.
 template <Field F>
 Vec3 moment(const BasicModel<F>& model, const Vec3& gamma) {
-  return gamma.cross(grad_gamma(model.body, model.field, gamma));
+  if constexpr (FieldWithMoment<F>) {
+    return moment(model.body, model.field, gamma);
+  } else {
+    return gamma.cross(grad_gamma(model.body, model.field, gamma));
+  }
 }
 
 /// Time derivative of the state (spec §4): ṁ = m × ω + γ × ∂V/∂γ, γ̇ = γ × ω, with ω = I⁻¹(m − k).

@@ -1,0 +1,147 @@
+#include "orbit_summary.hpp"
+
+#include <cmath>
+
+namespace newtop::app {
+namespace {
+
+const EllipticOrbit* ellipse(const io::OrbitScenario& sc) {
+  return std::get_if<EllipticOrbit>(&sc.orbit);
+}
+
+}  // namespace
+
+double start_variable(const io::OrbitScenario& sc) {
+  const EllipticOrbit* e = ellipse(sc);
+  return e ? e->true_anomaly0 : sc.integrate.t0;
+}
+
+double orbit_time(const io::OrbitScenario& sc, double x, double t0) {
+  const EllipticOrbit* e = ellipse(sc);
+  return e ? t0 + elapsed_time(*e, e->true_anomaly0, x) : x;
+}
+
+OrbitValues orbit_values(const io::OrbitScenario& sc, const OrbitState& s, double x) {
+  OrbitValues v;
+  if (const EllipticOrbit* e = ellipse(sc)) {
+    v.integral = hamiltonian(EllipticOrbitModel(sc.body, *e), s, x);
+  } else {
+    v.integral = jacobi_integral(CircularOrbitModel(sc.body, std::get<CircularOrbit>(sc.orbit)), s);
+  }
+  v.casimir = casimir_error(s);
+  v.casimirs = casimirs(s);
+  return v;
+}
+
+io::Json orbit_model_json(const io::OrbitScenario& sc) {
+  io::Json j;
+  j["inertia"] = io::to_json(sc.body.inertia());
+  j["mass"] = sc.body.mass();
+  j["gyrostat"] = io::to_json(sc.body.gyrostat());
+  const Mat3& P = sc.body.principal_axes();
+  j["principal_axes"] =
+      io::Json::array({io::to_json(P.col(0)), io::to_json(P.col(1)), io::to_json(P.col(2))});
+  if (const EllipticOrbit* e = ellipse(sc)) {
+    j["orbit"] = {{"kind", "elliptic"},
+                  {"eccentricity", e->eccentricity},
+                  {"mean_motion", e->mean_motion},
+                  {"true_anomaly", e->true_anomaly0}};
+  } else {
+    const auto& c = std::get<CircularOrbit>(sc.orbit);
+    j["orbit"] = {{"kind", "circular"}, {"rate", c.rate}, {"lambda", c.lambda_}};
+  }
+  return j;
+}
+
+void print_orbit_model(std::ostream& os, const io::OrbitScenario& sc) {
+  os << "body      A, B, C = " << format_vector(sc.body.inertia())
+     << "   k = " << format_vector(sc.body.gyrostat()) << "\n";
+  if (const EllipticOrbit* e = ellipse(sc)) {
+    os << "orbit     elliptic   e = " << format_number(e->eccentricity)
+       << "   n = " << format_number(e->mean_motion)
+       << "   nu0 = " << format_number(e->true_anomaly0) << "\n";
+  } else {
+    const auto& c = std::get<CircularOrbit>(sc.orbit);
+    os << "orbit     circular   rate = " << format_number(c.rate)
+       << "   lambda = " << format_number(c.lambda_) << "\n";
+  }
+}
+
+io::Json orbit_values_json(const io::OrbitScenario& sc, const OrbitValues& v) {
+  io::Json j;
+  j[sc.circular() ? "jacobi" : "hamiltonian_nu"] = v.integral;
+  j["gamma_gamma"] = v.casimirs.gamma_gamma;
+  j["normal_normal"] = v.casimirs.normal_normal;
+  j["gamma_normal"] = v.casimirs.gamma_normal;
+  return j;
+}
+
+std::string orbit_csv_header(const io::OrbitScenario& sc) {
+  return std::string("t,") + (sc.circular() ? "" : "nu,") +
+         "omega1,omega2,omega3,gamma1,gamma2,gamma3,normal1,normal2,normal3," +
+         (sc.circular() ? "jacobi" : "hamiltonian_nu") + ",casimir_error";
+}
+
+std::string orbit_csv_row(const io::OrbitScenario& sc, const OrbitState& s, double x) {
+  const double t = orbit_time(sc, x, sc.integrate.t0);
+  std::string row = format_number(t) + ",";
+  if (!sc.circular()) row += format_number(x) + ",";
+  const Vec3 w = omega(sc.body, s);
+  for (const Vec3* v : {&w, &s.gamma, &s.normal}) {
+    for (int i = 0; i < 3; ++i) row += format_number((*v)[i]) + ",";
+  }
+  const OrbitValues v = orbit_values(sc, s, x);
+  return row + format_number(v.integral) + "," + format_number(v.casimir);
+}
+
+io::Json orbit_simulation_json(const OrbitRunReport& r) {
+  const OrbitState& s = r.outcome.state;
+  io::Json j;
+  j["scenario"] = r.scenario.source;
+  j["method"] = r.method.name;
+  if (r.method.name == "rkf78") {
+    j["tolerance"] = {{"abs", r.method.abs_tol}, {"rel", r.method.rel_tol}};
+  } else {
+    j["step"] = r.method.step;
+  }
+  j["outcome"] = std::string(to_string(r.outcome.status));
+  j["steps"] = r.outcome.steps;
+  j["rejected_steps"] = r.outcome.rejected;
+  j["final"] = {{"t", r.t_final},
+                {"omega", io::to_json(omega(r.scenario.body, s))},
+                {"gamma", io::to_json(s.gamma)},
+                {"normal", io::to_json(s.normal)},
+                {"m", io::to_json(s.m)}};
+  if (!r.scenario.circular()) j["final"]["nu"] = r.outcome.t;
+  const char* name = r.scenario.circular() ? "jacobi" : "hamiltonian_nu";
+  j["integrals"] = {{"initial", orbit_values_json(r.scenario, r.initial)},
+                    {"final", orbit_values_json(r.scenario, r.final_values)},
+                    {"max_abs_drift",
+                     {{name, r.max_drift.integral},
+                      {"casimir_error", r.max_drift.casimir},
+                      {"geometric", r.max_geometric_drift}}}};
+  j["model"] = orbit_model_json(r.scenario);
+  if (r.csv_path) j["csv"] = *r.csv_path;
+  return j;
+}
+
+void print_orbit_simulation(std::ostream& os, const OrbitRunReport& r) {
+  const OrbitState& s = r.outcome.state;
+  os << "newtop simulate " << r.scenario.source << "\n";
+  print_orbit_model(os, r.scenario);
+  os << "method    " << r.method.name
+     << (r.method.name == "rkf78" ? "  tol = " + format_number(r.method.abs_tol)
+                                  : "  step = " + format_number(r.method.step))
+     << "\noutcome   " << to_string(r.outcome.status) << " at t = " << format_number(r.t_final)
+     << " after " << r.outcome.steps
+     << " steps\nfinal     omega = " << format_vector(omega(r.scenario.body, s))
+     << "\n          gamma = " << format_vector(s.gamma)
+     << "\n          normal = " << format_vector(s.normal) << "\n"
+     << (r.scenario.circular() ? "jacobi    " : "H_nu      ") << format_number(r.initial.integral)
+     << " -> " << format_number(r.final_values.integral)
+     << "   max |drift| = " << format_number(r.max_drift.integral)
+     << "\ncasimirs  max error = " << format_number(r.max_drift.casimir) << "\n";
+  if (r.csv_path) os << "trajectory written to " << *r.csv_path << "\n";
+}
+
+}  // namespace newtop::app

@@ -1,0 +1,51 @@
+#pragma once
+// Internal: the sections of a scenario file (docs/scenario.md) and the checks that span them.
+
+#include <string>
+#include <vector>
+
+#include "newtop/io/scenario.hpp"
+#include "toml_reader.hpp"
+
+namespace newtop::io {
+
+/// One input a derived quantity depends on, as `value^power`: the key that is named when the
+/// quantity overflows.
+struct Factor {
+  std::string section;
+  std::string key;
+  double value = 0.0;
+  int power = 1;
+};
+
+/// [field]: the quadratic field and how g and λ follow from the keys (for messages).
+struct FieldSection {
+  QuadraticField field;
+  std::vector<Factor> g;       ///< |g| ∝ Π value^power
+  std::vector<Factor> lambda;  ///< |λ| ∝ Π value^power
+};
+
+/// Every key [field] can hold.
+const std::vector<std::string>& field_keys();
+
+/// Reads [field] (kind optional where the keys say which field it is); fills the exact-field part
+/// of `exact` for kind = "exact" | "multipole".
+FieldSection read_field(TableReader& r, ExactSettings& exact);
+
+/// Where the body's quantities come from: [body] keys, or the [mass_model] key that made them.
+struct BodySource {
+  Factor mass, center_of_mass, inertia, gyrostat;
+};
+
+/// The largest magnitude newtop lets a derived quantity reach: overflow (1.8e308) stays 1e8 away,
+/// room for the sums of a few terms and the stages of an integrator.
+inline constexpr double kMaxMagnitude = 1e300;
+
+/// Checks that the potential's coefficients (M g r0, λI), the initial kinetic energy, m, ω, the
+/// integrals, the moment and their bounds over the whole motion (from the conservation of
+/// energy: ½ω·Iω ≤ T0 + 2 max|V|) stay below kMaxMagnitude; otherwise throws InputError naming the
+/// key whose value drives the overflow, with the quantity and its inputs.
+void check_magnitudes(const Model& model, const State& x0, const FieldSection& field,
+                      const BodySource& body, const toml::table& doc, const std::string& source);
+
+}  // namespace newtop::io

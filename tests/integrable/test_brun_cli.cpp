@@ -1,0 +1,69 @@
+// `newtop analytic` on Brun's case: the example on the level f = 0 reports the curve, the ranges of
+// u1 and u2, the frequencies and samples that agree with rkf78; a start with f != 0 is reported as
+// Brun's case, unsolved, with no samples and with the spectral curve of its level.
+
+#include <gtest/gtest.h>
+
+#include <complex>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "support/cli.hpp"
+
+namespace {
+
+using newtop::test::CliResult;
+using newtop::test::run_newtop;
+
+// The library's inversion matches rkf78 to 1e-9 (test_brun_case); the command reports it.
+constexpr double kAgreement = 1e-9;
+
+TEST(BrunCli, ReportsCurveRangesFrequenciesAndAgreement) {
+  const CliResult r = run_newtop("analytic " + newtop::test::example_path("analytic_brun.toml") +
+                                 " --samples 8 --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["case"], "brun");
+  EXPECT_EQ(j["samples"].size(), 9u);
+  EXPECT_LT(j["max_abs_error"].get<double>(), kAgreement);
+  EXPECT_EQ(j["curve"]["coefficients"].size(), 6u);
+  EXPECT_EQ(j["curve"]["branch_points"].size(), 5u);
+  EXPECT_EQ(j["u_ranges"].size(), 2u);
+  EXPECT_EQ(j["frequencies"].size(), 2u);
+  EXPECT_EQ(j["u"].size(), 9u);
+  for (const auto& s : j["u"]) {
+    for (int i = 0; i < 2; ++i) {
+      const auto& range = j["u_ranges"][i];
+      const double u = s[i == 0 ? "u1" : "u2"].get<double>();
+      EXPECT_GE(u, range[0].get<double>());
+      EXPECT_LE(u, range[1].get<double>());
+    }
+  }
+  EXPECT_TRUE(j.contains("resonant") && j.contains("period_matrix") && j.contains("sign_flips"));
+}
+
+TEST(BrunCli, NonzeroAreaIsReportedUnsolved) {
+  const CliResult r = run_newtop("analytic " + newtop::test::example_path("brun.toml") + " --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["case"], "brun");
+  EXPECT_TRUE(j["samples"].empty());
+  EXPECT_TRUE(j["max_abs_error"].is_null());
+  EXPECT_NE(j["reason"].get<std::string>().find("f != 0"), std::string::npos);
+  // The spectral curve of the level: D(u) = N² − 4λf² P vanishes at the reported roots.
+  const auto& sc = j["spectral_curve"];
+  ASSERT_EQ(sc["discriminant"].size(), 5u);
+  ASSERT_EQ(sc["discriminant_roots"].size(), 4u);
+  EXPECT_NE(sc["f"].get<double>(), 0.0);
+  for (const auto& root : sc["discriminant_roots"]) {
+    std::complex<double> u(root[0].get<double>(), root[1].get<double>()), d(0.0), size(0.0);
+    for (int i = 4; i >= 0; --i) {
+      d = d * u + sc["discriminant"][i].get<double>();
+      size = size * std::abs(u) + std::abs(sc["discriminant"][i].get<double>());
+    }
+    // Companion-matrix roots polished by Newton: D(root) at rounding of the largest term.
+    EXPECT_LT(std::abs(d), 1e-12 * std::abs(size));
+  }
+}
+
+}  // namespace
