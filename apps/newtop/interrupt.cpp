@@ -2,6 +2,8 @@
 
 #include <csignal>
 
+#include "newtop/io/output.hpp"
+
 namespace newtop::app {
 namespace {
 
@@ -11,7 +13,22 @@ extern "C" void record_signal(int s) { g_signal = s; }
 
 struct sigaction g_previous_int, g_previous_term;
 
+// The default action, after removing the temporaries of the open output files.
+extern "C" void remove_partial_files_and_die(int s) {
+  io::remove_open_temporaries();
+  std::signal(s, SIG_DFL);
+  std::raise(s);
+}
+
 }  // namespace
+
+void remove_partial_files_on_signal() {
+  struct sigaction sa {};
+  sa.sa_handler = remove_partial_files_and_die;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
 
 InterruptGuard::InterruptGuard() {
   g_signal = 0;

@@ -10,6 +10,12 @@
 
 namespace newtop::app {
 
+/// For the commands that do not stop gracefully: SIGINT or SIGTERM removes the temporaries of
+/// the open output files (io::AtomicFile) and then terminates the process as the signal would
+/// (exit status 128 + the signal number in the shell). An InterruptGuard overrides it while it
+/// lives.
+void remove_partial_files_on_signal();
+
 /// Thrown by throw_if_interrupted when a signal arrived.
 struct Interrupted : std::exception {
   int signal;

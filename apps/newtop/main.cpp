@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "interrupt.hpp"
 #include "newtop/core/types.hpp"
 #include "newtop/io/suggest.hpp"
 
@@ -87,6 +88,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return bad_input(std::string(e.what()) + (argc == 1 ? " (newtop --help lists them)" : ""));
   }
+  remove_partial_files_on_signal();
   try {
     for (auto& [sub, action] : actions) {
       if (sub->parsed()) return action();

@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <array>
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 
@@ -31,16 +33,45 @@ void check_output_path(const std::string& path, std::span<const std::string> inp
   }
 }
 
+// The temporaries of the open AtomicFiles, for a signal handler to remove: a fixed table of
+// lock-free slots (no allocation, no lock: async-signal-safe to read). A file that finds no free
+// slot is still removed by its destructor on every normal or exceptional exit.
+std::array<std::atomic<const char*>, 32> open_temporaries{};
+
+static_assert(std::atomic<const char*>::is_always_lock_free);
+
+void enlist(const char* tmp) {
+  for (auto& slot : open_temporaries) {
+    const char* expected = nullptr;
+    if (slot.compare_exchange_strong(expected, tmp)) return;
+  }
+}
+
+void delist(const char* tmp) {
+  for (auto& slot : open_temporaries) {
+    const char* expected = tmp;
+    if (slot.compare_exchange_strong(expected, nullptr)) return;
+  }
+}
+
 }  // namespace
+
+void remove_open_temporaries() noexcept {
+  for (auto& slot : open_temporaries) {
+    if (const char* tmp = slot.load()) ::unlink(tmp);
+  }
+}
 
 AtomicFile::AtomicFile(std::string path, std::span<const std::string> inputs)
     : path_(std::move(path)), tmp_(path_ + ".partial-" + std::to_string(::getpid())) {
   check_output_path(path_, inputs);
   out_.open(tmp_, std::ios::binary | std::ios::trunc);
   if (!out_) throw InputError(path_ + ": cannot open the output file for writing");
+  enlist(tmp_.c_str());
 }
 
 AtomicFile::~AtomicFile() {
+  delist(tmp_.c_str());
   if (!committed_) {
     out_.close();
     std::error_code ec;
@@ -57,6 +88,7 @@ void AtomicFile::commit() {
   std::filesystem::rename(tmp_, path_, ec);
   if (ec) throw InputError(path_ + ": cannot move the output into place: " + ec.message());
   committed_ = true;
+  delist(tmp_.c_str());  // after the rename: a signal in between finds no file to remove
 }
 
 CsvTrajectory::CsvTrajectory(std::ostream& out, const Model& model)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
+#include <string>
 
 #include "newtop/core/types.hpp"
 
@@ -81,10 +82,14 @@ class BoundsScanner {
   void outside() {
     const unsigned char c = at();
     if (c >= 0x80) fail(character() + " outside a string or comment");
-    if (c == '#') {
+    if (value_ && !is_line_space(c) && c != '"' && c != '\'' && c != '[' && c != '{' && c != '#') {
+      bare_value();
+    } else if (c == '#') {
       while (i_ < t_.size() && t_[i_] != '\n') ++i_;
       parts_ = 1;
     } else if (c == '"' || c == '\'') {
+      const bool was_value = value_;
+      value_ = false;
       if (run_of(static_cast<char>(c)) >= 3) {
         i_ += 3;
         c == '"' ? multi_line_basic() : multi_line_literal();
@@ -92,16 +97,34 @@ class BoundsScanner {
       } else {
         ++i_;
         single_line(static_cast<char>(c));  // may be a quoted part of a dotted key
+        if (was_value) parts_ = 1;
       }
     } else if (c == '[' || c == '{') {
       if (++depth_ > kMaxTomlNesting) {
         fail("arrays and inline tables nested more than " + std::to_string(kMaxTomlNesting) +
              " deep");
       }
+      // An array's elements are values; a table header's and an inline table's parts are keys.
+      open_.push_back(c == '[' && value_ ? '[' : c == '[' ? 'h' : '{');
+      value_ = open_.back() == '[';
       parts_ = 1;
       ++i_;
     } else if (c == ']' || c == '}') {
       depth_ = std::max(0, depth_ - 1);
+      if (!open_.empty()) open_.pop_back();
+      value_ = false;
+      parts_ = 1;
+      ++i_;
+    } else if (c == '=') {
+      value_ = true;
+      parts_ = 1;
+      ++i_;
+    } else if (c == ',') {
+      value_ = !open_.empty() && open_.back() == '[';
+      parts_ = 1;
+      ++i_;
+    } else if (c == '\n') {
+      if (open_.empty() || open_.back() != '[') value_ = false;
       parts_ = 1;
       ++i_;
     } else if (c == '.') {
@@ -113,6 +136,21 @@ class BoundsScanner {
       if (!continues_dotted_run(c)) parts_ = 1;
       ++i_;
     }
+  }
+
+  // A value that starts with neither a quote nor a bracket: toml++ 3.3 reads it as one token up to
+  // a blank, a line break, `,`, `]`, `}` or `#`, whatever lies between — quotes included (they do
+  // not start a string there) — asking of each character whether it ends the token, through the
+  // whitespace table that is undefined for some non-ASCII characters.
+  void bare_value() {
+    while (i_ < t_.size()) {
+      const unsigned char c = at();
+      if (is_line_space(c) || c == ',' || c == ']' || c == '}' || c == '#') break;
+      if (c >= 0x80) fail(character() + " in a value (numbers, booleans and dates are ASCII)");
+      ++i_;
+    }
+    value_ = false;
+    parts_ = 1;
   }
 
   void single_line(char quote) {
@@ -171,6 +209,8 @@ class BoundsScanner {
   std::size_t i_ = 0;
   int depth_ = 0;
   int parts_ = 1;
+  bool value_ = false;  ///< the next token is a value (after `=`, or an array's `[` or `,`)
+  std::string open_;    ///< open brackets: '[' array, '{' inline table, 'h' table header
 };
 
 }  // namespace

@@ -306,6 +306,28 @@ TEST(Cli, SignalRemovesPartialOutputAndExits128PlusSignal) {
   }
 }
 
+// The commands that do not stop gracefully (a scan, rotations, view) left FILE.partial-PID behind
+// when a signal killed them: the program's handler removes the temporaries of the open output
+// files, then the signal terminates the process as usual.
+TEST(Cli, ScanKilledBySignalLeavesNoPartialFile) {
+  const std::pair<const char*, int> signals[] = {{"INT", 130}, {"TERM", 143}};
+  for (const auto& [sig, code] : signals) {
+    const fs::path dir = scratch(std::string("scan_signal_") + sig);
+    fs::create_directories(dir);
+    const fs::path csv = dir / "map.csv";
+    const std::string script =
+        std::string(NEWTOP_EXE) + " stability " + example("stability_beletsky.toml") +
+        " --axis z --scan omega=0:3:1000,C=0.4:2.6:1000 --out " + csv.string() +
+        " 2>/dev/null & pid=$!; n=0; while [ ! -e " + csv.string() +
+        ".partial-$pid ] && [ $n -lt 3000 ]; do sleep 0.01; n=$((n+1)); done; kill -" + sig +
+        " $pid; wait $pid; exit $?";
+    const int status = std::system(("sh -c '" + script + "'").c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), code) << sig;
+    EXPECT_TRUE(fs::is_empty(dir)) << sig << ": partial output left behind";
+  }
+}
+
 // Issue 9: a loose tolerance ended `finished` with |γ| ≈ 135 and no warning.
 TEST(Cli, CasimirDriftWarns) {
   const CliResult bad =

@@ -73,6 +73,28 @@ TEST(ScenarioHostile, NonAsciiWhereTomlxxAsksForWhitespace) {
   EXPECT_EQ(*s.output.file, "trajectoire_été.csv");
 }
 
+// toml++ 3.3 reads a value that starts with neither a quote nor a bracket as one token up to a
+// blank, a line break, `,`, `]`, `}` or `#`; quotes inside it do not start a string, and each of
+// its characters goes through the whitespace table that is undefined for some non-ASCII characters.
+// The bounds took such a quote for the start of a string and let the string's bytes through.
+TEST(ScenarioHostile, NonAsciiInsideABareValueAfterAQuote) {
+  const std::string what =
+      ": malformed TOML: the character U+00E9 in a value (numbers, booleans "
+      "and dates are ASCII)";
+  expect_rejected("glued_quote", "mass = 0PPP'\u00e9'\n", ":1:13" + what);
+  expect_rejected("quote_after_control", "a = 0.2\x12\"\u00e9\"\n", ":1:10" + what);
+  expect_rejected("quotes_in_token", "a = 0\"\"*x\"\"\"\"\u00e9\"\n", ":1:14" + what);
+  expect_rejected("equals_in_token", "6=3===\"\u00e9\"\n", ":1:8" + what);
+  expect_rejected("array_element", "a = [1, 2'\u00e9']\n", ":1:11" + what);
+  expect_rejected("inline_table", "a = {b = 2'\u00e9'}\n", ":1:12" + what);
+  // Quoted strings keep their non-ASCII characters as values, in arrays and inline tables, and
+  // as quoted keys: the file reaches the scenario's own checks.
+  expect_rejected("quoted_values",
+                  "[body]\ninertia = [1.0, 1.5, 2.2]\nmass = 1.0\n\"\u00e9\" = [\"\u00e9\", "
+                  "'\u00fc', {b = \"\u00f6\"}]\n",
+                  ":4:1: [body] \u00e9: unknown key");
+}
+
 TEST(ScenarioHostile, IntegersReadExactlyOrRefused) {
   const std::string tail =
       "expected a number that a double holds exactly, found the integer 9007199254740993 (the "

@@ -16,6 +16,10 @@ using Json = nlohmann::ordered_json;
 
 /// A file written under a temporary name beside its destination and renamed over it by commit();
 /// destroyed without commit() it removes the temporary, so no half-written file is ever left.
+///
+/// Every open AtomicFile's temporary is listed where a signal handler can find it:
+/// remove_open_temporaries() removes them (async-signal-safe), for a process about to die of a
+/// signal that does not unwind its stack.
 class AtomicFile {
  public:
   /// Opens the temporary at once, so that an output that cannot be created is found before any
@@ -38,6 +42,10 @@ class AtomicFile {
   std::ofstream out_;
   bool committed_ = false;
 };
+
+/// Removes the temporary of every AtomicFile still open (not committed). Async-signal-safe: for a
+/// SIGINT/SIGTERM handler before the process terminates.
+void remove_open_temporaries() noexcept;
 
 /// CSV trajectory: `t,p,q,r,gamma1,gamma2,gamma3,energy,area,geometric[,brun][,lagrange]`,
 /// numbers in shortest round-trip form.
