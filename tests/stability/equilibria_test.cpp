@@ -18,8 +18,9 @@ using stability_test::random_unit;
 using stability_test::uniform;
 
 // γ × ∂V/∂γ at a computed equilibrium, relative to |∂V/∂γ|: the root is polished by Newton to
-// round-off, γ is built from a few divisions and a normalisation: a few tens of ulps.
-constexpr double kResidual = 64 * kEps;
+// round-off, γ is built from a few divisions and a normalisation: a few tens of ulps (measured up
+// to 67 ulps, clang 14 at -O1; 64 was exceeded there): 128 ε.
+constexpr double kResidual = 128 * kEps;
 // Two equilibria are the same point when this close: the brute-force Newton solution and the
 // polished root each sit within ~1e-14 of the exact point; 1e-9 leaves room and still separates
 // points that are O(1e-3) apart in the random cases.
@@ -28,6 +29,15 @@ constexpr double kSamePoint = 1e-9;
 double residual(const Model& model, const Vec3& gamma) {
   const Vec3 grad = grad_gamma(model, gamma);
   return gamma.cross(grad).norm() / grad.norm();
+}
+
+// At an equilibrium ∂V/∂γ = b + λIγ = κγ can be much shorter than its two terms (κ small): the
+// residual, relative to |∂V/∂γ|, carries the terms' rounding relative to that shorter vector.
+double residual_bound(const Model& model, const Vec3& g) {
+  const Vec3 b = model.body.mass() * model.field.g * model.body.center_of_mass();
+  const Vec3 d = model.field.lambda_ * model.body.inertia();
+  const double terms = b.norm() + d.cwiseProduct(g).norm();
+  return kResidual * std::max(1.0, terms / grad_gamma(model, g).norm());
 }
 
 /// Brute force: Newton on (b + λIγ − κγ = 0, ½(γ·γ − 1) = 0) from `starts` random points on the
@@ -122,7 +132,7 @@ TEST(Equilibria, RandomParametersAgreeWithMultistartSearch) {
     counts.insert(brute.size());
     for (const auto& e : set.equilibria) {
       ASSERT_TRUE(e.gamma.allFinite());
-      EXPECT_LE(residual(model, e.gamma), kResidual);
+      EXPECT_LE(residual(model, e.gamma), residual_bound(model, e.gamma)) << "trial " << trial;
       EXPECT_NEAR(e.gamma.norm(), 1.0, kResidual);
       EXPECT_LE(std::abs(e.staude_residual),
                 kResidual * model.body.inertia().maxCoeff() * r0.norm());
