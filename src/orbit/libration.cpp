@@ -7,26 +7,42 @@
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
 
-#include "newtop/orbit/orbit_model.hpp"
-
 namespace newtop {
 
 PitchProblem pitch_problem(double eccentricity, double k) {
   if (!(eccentricity >= 0.0 && eccentricity < 1.0)) {
     throw InputError("eccentricity: expected 0 <= e < 1, found " + format_number(eccentricity));
   }
-  if (!std::isfinite(k)) throw InputError("k: expected a finite (B - A)/C, found " + format_number(k));
+  if (!std::isfinite(k))
+    throw InputError("k: expected a finite (B - A)/C, found " + format_number(k));
   return {eccentricity, k};
 }
 
 PitchProblem pitch_problem(const Body& body, const EllipticOrbit& orbit) {
   check_orbit_body(body);
   if (body.gyrostat() != Vec3::Zero()) {
-    throw InputError("gyrostat: expected none for the planar pitch motion (Beletsky's equation), "
-                     "found " + format_vector(body.gyrostat()));
+    throw InputError(
+        "gyrostat: expected none for the planar pitch motion (Beletsky's equation), "
+        "found " +
+        format_vector(body.gyrostat()));
   }
   const Vec3& I = body.inertia();
   return pitch_problem(orbit.eccentricity, (I.y() - I.x()) / I.z());
+}
+
+Vec2 pitch_state(const Body& body, const EllipticOrbit& orbit, const OrbitState& s, double nu,
+                 double tolerance) {
+  const Vec3 w = omega(body, s);
+  const double scale = std::max(1.0, w.norm());
+  if ((s.normal - Vec3::UnitZ()).norm() > tolerance || std::abs(s.gamma.z()) > tolerance ||
+      std::abs(w.x()) > tolerance * scale || std::abs(w.y()) > tolerance * scale) {
+    throw InputError(
+        "initial: expected the planar pitch motion (normal = [0, 0, 1], gamma in the "
+        "body xy plane, omega along z), found normal = " +
+        format_vector(s.normal) + ", gamma = " + format_vector(s.gamma) +
+        ", omega = " + format_vector(w));
+  }
+  return {std::atan2(-s.gamma.y(), s.gamma.x()), w.z() / anomaly_rate(orbit, nu) - 1};
 }
 
 Vec2 beletsky_rhs(const PitchProblem& p, const Vec2& x, double nu) {

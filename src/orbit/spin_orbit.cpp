@@ -87,12 +87,12 @@ PeriodicSolution complete(const PitchProblem& p, const SpinOrbitResonance& r, do
 
 }  // namespace
 
-std::vector<PeriodicSolution> periodic_solutions(const PitchProblem& p,
-                                                 const SpinOrbitResonance& r,
+std::vector<PeriodicSolution> periodic_solutions(const PitchProblem& p, const SpinOrbitResonance& r,
                                                  const ResonanceSearch& search) {
-  if (search.samples < 2) throw InputError("samples: expected >= 2, found " + std::to_string(search.samples));
-  const double w = search.half_window > 0 ? search.half_window
-                                          : std::max(0.5, 2 * std::sqrt(3 * std::abs(p.k)));
+  if (search.samples < 2)
+    throw InputError("samples: expected >= 2, found " + std::to_string(search.samples));
+  const double w =
+      search.half_window > 0 ? search.half_window : std::max(0.5, 2 * std::sqrt(3 * std::abs(p.k)));
   const double centre = r.half_turns / (2.0 * r.periods);
   const double half = kPi * r.periods;  // ν = πN, the second reversibility point
   std::vector<PeriodicSolution> found;
@@ -145,6 +145,46 @@ double resonance_strength(double spin_ratio, double eccentricity) {
 
 double averaged_half_width(const PitchProblem& p, double spin_ratio) {
   return std::sqrt(3 * std::abs(p.k) * std::abs(resonance_strength(spin_ratio, p.eccentricity)));
+}
+
+namespace {
+
+/// True when the start (θc, θ′) keeps librating about the centre θc of a resonance of N orbits:
+/// after each period θ returns near θc (mod π) and the phase difference, unwrapped, stays within π.
+bool librates(const PitchProblem& p, int orbits, double theta_c, double dtheta, int periods) {
+  Vec2 x(theta_c, dtheta);
+  double unwrapped = 0.0, previous = 0.0;
+  for (int j = 0; j < periods; ++j) {
+    x = pitch_advance(p, x, 0.0, 2 * kPi * orbits);
+    const double d = std::remainder(x[0] - theta_c, kPi);
+    unwrapped += std::remainder(d - previous, kPi);
+    previous = d;
+    if (std::abs(unwrapped) > kPi) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+double measured_half_width(const PitchProblem& p, const PeriodicSolution& centre, int periods) {
+  constexpr int kBisections = 30;
+  const double e = p.eccentricity;
+  const double to_spin = (1 + e) * (1 + e) / std::pow(1 - e * e, 1.5);
+  // The averaged half-width bounds the search from above with a wide margin.
+  const double ratio = double(centre.resonance.p) / centre.resonance.q;
+  const double reach = 3 * std::max(averaged_half_width(p, ratio), 1e-6) / to_spin;
+  double edges = 0.0;
+  for (const double sign : {1.0, -1.0}) {
+    double lo = 0.0, hi = reach;
+    for (int i = 0; i < kBisections; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      const bool inside = librates(p, centre.resonance.periods, centre.theta0,
+                                   centre.dtheta0 + sign * mid, periods);
+      (inside ? lo : hi) = mid;
+    }
+    edges += 0.5 * (lo + hi);
+  }
+  return 0.5 * edges * to_spin;
 }
 
 double chaos_threshold(int iterates) {

@@ -13,6 +13,7 @@
 
 #include "newtop/model/body.hpp"
 #include "newtop/orbit/orbit.hpp"
+#include "newtop/orbit/orbit_model.hpp"
 
 namespace newtop {
 
@@ -32,6 +33,12 @@ PitchProblem pitch_problem(double eccentricity, double k);
 /// InputError unless the body turns about its centre of mass without gyrostatic moment (the
 /// planar motion about z is Beletsky's equation only then).
 PitchProblem pitch_problem(const Body& body, const EllipticOrbit& orbit);
+
+/// (θ, θ′) of a planar state at the true anomaly ν: the orbit normal along body z, γ in the body
+/// xy plane and ω along z, each within `tolerance`; θ = atan2(−γ_y, γ_x) (γ = (cos θ, −sin θ, 0))
+/// and θ′ = ω_z/ν̇ − 1. Throws InputError naming `initial` otherwise.
+Vec2 pitch_state(const Body& body, const EllipticOrbit& orbit, const OrbitState& s, double nu,
+                 double tolerance);
 
 /// Absolute and relative tolerance of the Fehlberg 7(8) steps of every pitch integration.
 inline constexpr double kPitchTolerance = 1e-13;

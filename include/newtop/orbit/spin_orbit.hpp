@@ -19,8 +19,8 @@ namespace newtop {
 
 /// A resonance p:q, reduced to its period N (orbits) and advance M (half turns of θ per period).
 struct SpinOrbitResonance {
-  int p = 1, q = 1;  ///< spin : orbit, as given (p ≥ 0, q ≥ 1)
-  int periods = 1;   ///< N
+  int p = 1, q = 1;    ///< spin : orbit, as given (p ≥ 0, q ≥ 1)
+  int periods = 1;     ///< N
   int half_turns = 0;  ///< M, θ(ν + 2πN) = θ(ν) + Mπ
 };
 
@@ -36,8 +36,8 @@ const char* to_string(FloquetStability s);
 /// One periodic solution of the resonance.
 struct PeriodicSolution {
   SpinOrbitResonance resonance;
-  double theta0 = 0.0;   ///< θ(0) ∈ {0, π/2}: the reversibility line it starts on (at periapsis)
-  double dtheta0 = 0.0;  ///< θ′(0)
+  double theta0 = 0.0;  ///< θ(0) ∈ {0, π/2}: the reversibility line it starts on (at periapsis)
+  double dtheta0 = 0.0;               ///< θ′(0)
   Mat2 monodromy = Mat2::Identity();  ///< Φ(2πN, 0)
   std::complex<double> multipliers[2];
   FloquetStability stability = FloquetStability::stable;
@@ -52,8 +52,7 @@ struct ResonanceSearch {
 };
 
 /// Every symmetric periodic solution of the resonance found in the scan window, on both lines.
-std::vector<PeriodicSolution> periodic_solutions(const PitchProblem& p,
-                                                 const SpinOrbitResonance& r,
+std::vector<PeriodicSolution> periodic_solutions(const PitchProblem& p, const SpinOrbitResonance& r,
                                                  const ResonanceSearch& search = {});
 
 /// Goldreich & Peale (1966) strength H(p, e) of the resonance p (spin/orbit ratio, a multiple of
@@ -65,12 +64,19 @@ double resonance_strength(double spin_ratio, double eccentricity);
 /// which is also its small-libration frequency in units of n (Goldreich & Peale 1966).
 double averaged_half_width(const PitchProblem& p, double spin_ratio);
 
+/// The resonance's half-width in θ̇/n measured on the map over its period 2πN: from the stable
+/// periodic solution `centre`, θ′(0) is moved up and down (bisection, 30 steps) to the edge where
+/// the start stops librating about it within `periods` periods (its phase relative to the centre,
+/// taken mod π, accumulates more than π); the mean of the two edges, converted to θ̇/n at
+/// periapsis. Meaningful where the separatrix's chaotic layer is thin (small k).
+double measured_half_width(const PitchProblem& p, const PeriodicSolution& centre, int periods);
+
 /// One start of the periapsis section and what became of it.
 struct SectionOrbit {
   double theta0 = 0.0, dtheta0 = 0.0;  ///< at ν = 0 (periapsis)
-  std::vector<Vec2> points;            ///< (θ mod π in [−π/2, π/2), θ′) at ν = 2πj, j = 1..iterates
-  double lyapunov = 0.0;  ///< finite-time Lyapunov exponent per orbit, (1/J) ln |Φ(2πJ, 0) v|
-  bool chaotic = false;   ///< lyapunov > chaos_threshold(J)
+  std::vector<Vec2> points;  ///< (θ mod π in [−π/2, π/2), θ′) at ν = 2πj, j = 1..iterates
+  double lyapunov = 0.0;     ///< finite-time Lyapunov exponent per orbit, (1/J) ln |Φ(2πJ, 0) v|
+  bool chaotic = false;      ///< lyapunov > chaos_threshold(J)
 };
 
 /// The exponent above which a start is called chaotic after J orbits: a regular orbit's tangent
