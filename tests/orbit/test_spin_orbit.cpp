@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 #include "newtop/orbit/spin_orbit.hpp"
@@ -118,6 +120,42 @@ TEST(SpinOrbit, ResonanceWidthIsGoldreichPealesAveragedWidth) {
         solution_on(p, resonance(pp, qq), resonance_strength(ratio, e) > 0 ? 0.0 : kPi / 2);
     const double width = averaged_half_width(p, ratio);
     EXPECT_NEAR(measured_half_width(p, centre, 400), width, 10 * k * width) << ratio;
+  }
+}
+
+TEST(SpinOrbit, SynchronousSolutionLosesStabilityInTheFirstMathieuTongue) {
+  // About the synchronous solution (θ = O(e), cos 2θ = 1 + O(e²)) the variational equation is
+  // (1 + e cos ν) δ″ − 2e sin ν δ′ + ω²δ = 0, ω² = 3k. At ω = 1/2 the trial 4π-periodic
+  // δ = a cos(ν/2) + b sin(ν/2) leaves a(ω² − 1/4 + 3e/8) cos(ν/2) + b(ω² − 1/4 − 3e/8) sin(ν/2)
+  // (plus 3ν/2 harmonics): the first tongue, where the multipliers are real and negative
+  // (trace < −2), is 3k ∈ (1/4 − 3e/8, 1/4 + 3e/8) + O(e²), i.e. k = 1/12 ∓ e/8. Its edges are
+  // found where trace + 2 changes sign; their O(e²) error quarters as e halves (measured 2.4e-4 and
+  // 2.7e-4 at e = 0.02, 6e-5 at e = 0.01): bound 2e² at e = 0.02, ratio in (3, 5).
+  auto trace_plus_2 = [](double e, double k) {
+    for (const auto& s : periodic_solutions(pitch_problem(e, k), resonance(1, 1))) {
+      if (s.theta0 == 0.0 && std::abs(s.dtheta0) < 0.5) return s.monodromy.trace() + 2;
+    }
+    throw std::runtime_error("no synchronous solution");
+  };
+  auto edges = [&](double e) {
+    const double centre = 1.0 / 12, reach = e / 4;
+    EXPECT_LT(trace_plus_2(e, centre), 0.0);  // inside: unstable by period doubling
+    std::uintmax_t n = 100;
+    const auto f = [&](double k) { return trace_plus_2(e, k); };
+    const auto lo = boost::math::tools::toms748_solve(
+        f, centre - reach, centre, boost::math::tools::eps_tolerance<double>(40), n);
+    n = 100;
+    const auto hi = boost::math::tools::toms748_solve(
+        f, centre, centre + reach, boost::math::tools::eps_tolerance<double>(40), n);
+    return std::pair{0.5 * (lo.first + lo.second) - (centre - e / 8),
+                     0.5 * (hi.first + hi.second) - (centre + e / 8)};
+  };
+  const auto err1 = edges(0.02), err2 = edges(0.01);
+  EXPECT_LT(std::abs(err1.first), 2 * 0.02 * 0.02);
+  EXPECT_LT(std::abs(err1.second), 2 * 0.02 * 0.02);
+  for (const double ratio : {err1.first / err2.first, err1.second / err2.second}) {
+    EXPECT_GT(ratio, 3.0);
+    EXPECT_LT(ratio, 5.0);
   }
 }
 
