@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "command.hpp"
+#include "interrupt.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/orbit/spin_orbit.hpp"
@@ -82,7 +83,7 @@ io::Json solution_json(const PeriodicSolution& s, double e) {
           {"max_deviation", s.max_deviation}};
 }
 
-int run(const LibrationArgs& a) {
+int run_guarded(const LibrationArgs& a) {
   const io::OrbitScenario sc = io::load_orbit_scenario(a.scenario);
   const auto* orbit = std::get_if<EllipticOrbit>(&sc.orbit);
   if (!orbit) {
@@ -121,6 +122,7 @@ int run(const LibrationArgs& a) {
   for (const SpinOrbitResonance& r : resonances) {
     const double ratio = double(r.p) / r.q;
     io::Json sols = io::Json::array();
+    throw_if_interrupted(0.0);
     for (const PeriodicSolution& s : periodic_solutions(problem, r))
       sols.push_back(solution_json(s, e));
     res.push_back({{"resonance", std::to_string(r.p) + ":" + std::to_string(r.q)},
@@ -134,6 +136,7 @@ int run(const LibrationArgs& a) {
   io::Json section = io::Json::array();
   int chaotic = 0;
   for (std::size_t i = 0; i < starts.size(); ++i) {
+    throw_if_interrupted(0.0);
     const SectionOrbit o = periapsis_section(problem, starts[i][0], starts[i][1], a.iterates);
     chaotic += o.chaotic;
     if (file) {
@@ -183,6 +186,19 @@ int run(const LibrationArgs& a) {
             << " per orbit)\n";
   if (a.out) std::cout << "section written to " << *a.out << "\n";
   return kExitOk;
+}
+
+/// SIGINT/SIGTERM between resonances or starts: the CSV under construction is removed, exit
+/// 128 + the signal.
+int run(const LibrationArgs& a) {
+  const InterruptGuard guard;
+  try {
+    return run_guarded(a);
+  } catch (const Interrupted& e) {
+    std::cerr << "newtop: interrupted by " << signal_name(e.signal)
+              << (a.out ? "; the output file was not written" : "") << '\n';
+    return 128 + e.signal;
+  }
 }
 
 const RegisterCommand reg{Command{
