@@ -1,0 +1,93 @@
+// newtop libration: the pitch state read from the full (m, γ, n) model, the command's JSON and
+// CSV against the library, and its bad input (one line, exit 2, nothing written).
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "newtop/orbit/spin_orbit.hpp"
+#include "orbit_problems.hpp"
+#include "support/cli.hpp"
+
+namespace newtop {
+namespace {
+
+TEST(LibrationCli, PitchStateFollowsTheFullModel) {
+  // A planar state of the full model, carried by the full equations, read back as (θ, θ′), equals
+  // Beletsky's equation carried from the state read at the start (both Fehlberg 7(8), ~1e-11).
+  const Vec3 I(0.314, 0.474, 0.542);
+  const Body body = Body::from_principal(I, 1.0, Vec3::Zero());
+  const EllipticOrbit orbit = EllipticOrbit::from_mean_motion(1.0, 0.2, 0.7);
+  const EllipticOrbitModel model(body, orbit);
+  const double theta = -0.4, wz = 1.3;
+  const OrbitState x0{I.z() * wz * Vec3::UnitZ(), Vec3(std::cos(theta), -std::sin(theta), 0),
+                      Vec3::UnitZ()};
+  const Vec2 p0 = pitch_state(body, orbit, x0, 0.7, 1e-12);
+  EXPECT_NEAR(p0[0], theta, 1e-15);
+  EXPECT_NEAR(p0[1], wz / anomaly_rate(orbit, 0.7) - 1, 1e-15);
+  const OrbitState x1 = test::reference(model, x0, 0.7, 7.0, 1e-13);
+  const Vec2 p1 = pitch_state(body, orbit, x1, 7.0, 1e-9);
+  const Vec2 expected = pitch_advance(pitch_problem(body, orbit), p0, 0.7, 7.0);
+  EXPECT_NEAR(std::remainder(p1[0] - expected[0], 2 * std::numbers::pi), 0.0, 1e-9);
+  EXPECT_NEAR(p1[1], expected[1], 1e-9);
+  OrbitState tilted = x0;
+  tilted.m.x() = 0.1;
+  EXPECT_THROW(pitch_state(body, orbit, tilted, 0.7, 1e-9), InputError);
+}
+
+TEST(LibrationCli, JsonAndCsvAgreeWithTheLibrary) {
+  const std::string csv = (std::filesystem::temp_directory_path() /
+                           ("libration_" + std::to_string(::getpid()) + ".csv"))
+                              .string();
+  const auto r = test::run_newtop("libration " + test::example_path("orbit_spin_orbit.toml") +
+                                      " --resonances 1:1,3:2 --spin 3.4:3.6:2 --iterates 30 --json"
+                                      " --out " +
+                                      csv,
+                                  test::Stderr::separate);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const PitchProblem p = pitch_problem(0.1, (0.474 - 0.314) / 0.542);
+  EXPECT_DOUBLE_EQ(j["k"].get<double>(), p.k);
+  ASSERT_EQ(j["resonances"].size(), 2u);
+  EXPECT_EQ(j["resonances"][1]["resonance"], "3:2");
+  EXPECT_EQ(j["resonances"][1]["half_turns"], 1);
+  const auto lib = periodic_solutions(p, resonance(1, 1));
+  ASSERT_EQ(j["resonances"][0]["solutions"].size(), lib.size());
+  EXPECT_DOUBLE_EQ(j["resonances"][0]["solutions"][0]["dtheta0"].get<double>(), lib[0].dtheta0);
+  ASSERT_EQ(j["starts"].size(), 3u);  // the scenario's start and the two --spin starts
+  EXPECT_DOUBLE_EQ(j["starts"][0]["theta0"].get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(j["starts"][0]["dtheta0"].get<double>(), 0.0);  // at rest in the orbital frame
+  EXPECT_NEAR(j["starts"][2]["spin0"].get<double>(), 3.6, 1e-14);
+  const SectionOrbit o = periapsis_section(p, 0.0, dtheta_from_spin(0.1, 3.6), 30);
+  EXPECT_DOUBLE_EQ(j["starts"][2]["lyapunov"].get<double>(), o.lyapunov);
+  std::ifstream in(csv);
+  std::string line, last;
+  int rows = 0;
+  std::getline(in, line);
+  EXPECT_EQ(line, "start,orbit,theta,dtheta,spin,lyapunov,chaotic");
+  while (std::getline(in, line)) {
+    ++rows;
+    last = line;
+  }
+  EXPECT_EQ(rows, 90);
+  EXPECT_EQ(last.substr(0, 5), "2,30,");
+  EXPECT_NEAR(std::stod(last.substr(5)), o.points.back()[0], 1e-15);
+  std::filesystem::remove(csv);
+}
+
+TEST(LibrationCli, BadInputIsOneLineAndExitTwo) {
+  const std::string ex = test::example_path("orbit_spin_orbit.toml");
+  for (const std::string& args :
+       {ex + " --resonances 3-2", ex + " --resonances 1:0", ex + " --spin 2:1:5",
+        ex + " --spin 1:2", ex + " --iterates 0", test::example_path("orbit_leo_lagrange.toml")}) {
+    const auto r = test::run_newtop("libration " + args, test::Stderr::separate);
+    EXPECT_EQ(r.code, 2) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+  }
+}
+
+}  // namespace
+}  // namespace newtop
