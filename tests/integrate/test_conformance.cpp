@@ -126,9 +126,9 @@ TYPED_TEST(Conformance, ObservedOrder) {
       << "errors " << err[0] << " " << err[1] << " " << err[2];
 }
 
-// Casimirs γ·γ and m·γ: every sub-flow preserves them exactly, so only round-off remains, which
-// compensated summation keeps to a random walk: c·ε·√N with c = 8 covering the per-step rounding
-// of the increments.
+// Casimirs γ·γ and m·γ: every sub-flow preserves them exactly, so only round-off remains; each
+// sub-flow's increment is rounded once and without bias, so it is a random walk: c·ε·√N with c = 8
+// covering the per-step rounding of the increments.
 constexpr int kCasimirSteps = 20000;
 
 TYPED_TEST(Conformance, CasimirsToRoundOff) {

@@ -98,8 +98,10 @@ TEST(BrunIntegral, ConservedOnlyWithoutCentreOfMassOffset) {
   EXPECT_GT(change, 1e-2);
 }
 
-// Casimirs over 1e6 steps: compensated summation keeps γ·γ and m·γ to a random walk of round-off,
-// c·ε·√N with c = 8; without it a systematic drift of ~N·ε (= 2e-10) would appear.
+// Casimirs over 1e6 steps. Each rotation adds to the state an increment formed without
+// cancellation and rounded once; the roundings are unbiased, so γ·γ and m·γ follow a random walk
+// of round-off, c·ε·√N with c = 8 (Brouwer's law). A biased rounding — e.g. cos θ − 1 formed as a
+// difference, or an increment rounded twice the same way — drifts like N·ε/2 ≈ 1e-10 here.
 TEST(LongRun, CasimirsOverAMillionSteps) {
   const Model m = test::generic_model(Vec3(0.1, -0.2, 0.05));
   State x = test::generic_state(m);
