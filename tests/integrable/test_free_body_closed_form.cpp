@@ -17,8 +17,9 @@ namespace {
 // The quadrature is asked for 1e-15 relative on the rate, smooth and periodic: its result is good
 // to a few ulps of the angle per period. Its bisection is capped at depth 8: on a quarter period
 // the rate is smooth enough that 31 Kronrod points converge in a few levels, and asking round-off
-// of deeper levels only bisects noise (minutes per case, more under the sanitizers). The closed form adds a few ulps per R_J and Jacobi
-// evaluation. Both grow with the angle: 1e-13 (the agreement target) per radian-scale.
+// of deeper levels only bisects noise (minutes per case, more under the sanitizers). The closed
+// form adds a few ulps per R_J and Jacobi evaluation. Both grow with the angle: 1e-13 (the issue's
+// agreement target) per radian-scale.
 constexpr double kAngleAgreement = 1e-13;
 constexpr double kMomentumAgreement = 1e-13;
 
