@@ -68,15 +68,17 @@ void print_rotations(std::ostream& os, const RotationFamilies& f) {
 
 int run(const RotationsArgs& a) {
   const io::Scenario sc = io::load_scenario(a.scenario);
+  require_quadratic(sc.model, sc.source, "newtop rotations (the Staude cone of spec §8)");
   // The CSV is created (and checked against the inputs) before any work.
   std::unique_ptr<io::AtomicFile> file;
   if (a.out) file = std::make_unique<io::AtomicFile>(*a.out, sc.input_files);
-  const RotationFamilies f = permanent_rotations(sc.model, a.samples);
+  const RotationFamilies f = permanent_rotations(sc.model.quadratic(), a.samples);
   if (file) write_csv(*file, f);
   if (a.json) {
     io::Json j = rotations_json(f);
     if (a.out) j["csv"] = *a.out;
     j["model"] = model_json(sc.model);
+    j["field"] = field_json(sc.model);
     print_json(std::cout, j);
     return kExitOk;
   }

@@ -6,7 +6,7 @@
 #include <optional>
 #include <vector>
 
-#include "newtop/model/model.hpp"
+#include "newtop/model/basic_model.hpp"
 
 namespace newtop {
 
@@ -20,7 +20,7 @@ double staude_cone(const Body& body, const Vec3& gamma);
 
 /// Ω² along an axis γ of the Staude cone that is not a principal axis (spec §8):
 /// Ω² = λ + M g (γ × r0)·(γ × Iγ) / |γ × Iγ|². NaN where γ × Iγ = 0 (a principal axis).
-double cone_omega_squared(const Model& model, const Vec3& gamma);
+double cone_omega_squared(const QuadraticModel& model, const Vec3& gamma);
 
 /// One sampled axis of the cone with its Ω²; admissible when Ω² ≥ 0 (either sense of rotation).
 struct ConeAxis {
@@ -55,6 +55,6 @@ inline constexpr int kMaxRotationSamples = 100000;
 /// γ(τ) ∝ (I − τE)⁻¹ r0 for τ ∈ ℝ (each τ a generator, τ → ±∞ gives r0 itself), plus the extra
 /// plane spanned by e_i and (I − I_i E)⁻¹ r0 where x0_i = 0. Throws InputError for a body with a
 /// rotor (k ≠ 0), whose rotations are outside spec §8.
-RotationFamilies permanent_rotations(const Model& model, int samples);
+RotationFamilies permanent_rotations(const QuadraticModel& model, int samples);
 
 }  // namespace newtop
