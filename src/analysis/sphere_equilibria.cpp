@@ -113,8 +113,9 @@ EquilibriumSet sphere_equilibria(const Model& model, const std::vector<Vec3>& st
   }
   std::vector<Vec3> found;
   for (const Vec3& s : starts) {
-    const auto [g, r] = descend(model, s);
-    if (!(r <= kMomentTolerance * moment_scale)) continue;
+    const std::pair<Vec3, double> d = descend(model, s);
+    const Vec3& g = d.first;  // no structured binding: a lambda captures it
+    if (!(d.second <= kMomentTolerance * moment_scale)) continue;
     const bool seen = std::any_of(found.begin(), found.end(),
                                   [&](const Vec3& f) { return (f - g).norm() <= kSamePoint; });
     if (!seen) found.push_back(g);
