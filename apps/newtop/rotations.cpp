@@ -47,7 +47,7 @@ io::Json rotations_json(const RotationFamilies& f) {
   return j;
 }
 
-void print_rotations(std::ostream& os, const RotationFamilies& f) {
+void print_rotations(std::ostream& os, const RotationFamilies& f, FieldKind kind) {
   os << "permanent rotations omega = Omega gamma (spec §8)\n";
   for (const auto& a : f.principal_axes) {
     os << "  principal axis gamma = " << format_vector(a) << ": any Omega\n";
@@ -61,18 +61,18 @@ void print_rotations(std::ostream& os, const RotationFamilies& f) {
   } else if (!f.cone.empty()) {
     std::size_t admissible = 0;
     for (const auto& c : f.cone) admissible += c.admissible;
-    os << "  Staude cone gamma.(I gamma x r0) = 0: " << f.cone.size() << " sampled axes, "
-       << admissible << " admissible (Omega^2 >= 0)\n";
+    os << (kind == FieldKind::quadratic ? "  Staude cone gamma.(I gamma x r0) = 0: "
+                                        : "  axes with L(gamma) = Omega^2 gamma x I gamma: ")
+       << f.cone.size() << " sampled axes, " << admissible << " admissible (Omega^2 >= 0)\n";
   }
 }
 
 int run(const RotationsArgs& a) {
   const io::Scenario sc = io::load_scenario(a.scenario);
-  require_quadratic(sc.model, sc.source, "newtop rotations (the Staude cone of spec §8)");
   // The CSV is created (and checked against the inputs) before any work.
   std::unique_ptr<io::AtomicFile> file;
   if (a.out) file = std::make_unique<io::AtomicFile>(*a.out, sc.input_files);
-  const RotationFamilies f = permanent_rotations(sc.model.quadratic(), a.samples);
+  const RotationFamilies f = permanent_rotations(sc.model, a.samples);
   if (file) write_csv(*file, f);
   if (a.json) {
     io::Json j = rotations_json(f);
@@ -84,7 +84,7 @@ int run(const RotationsArgs& a) {
   }
   std::cout << "newtop rotations " << sc.source << "\n";
   print_model(std::cout, sc.model);
-  print_rotations(std::cout, f);
+  print_rotations(std::cout, f, sc.model.kind());
   if (a.out) std::cout << "cone samples written to " << *a.out << "\n";
   return kExitOk;
 }

@@ -140,7 +140,7 @@ TEST(ModelCli, StabilityOfAnExactFieldEquilibriumUsesTheField) {
 
 TEST(ModelCli, QuadraticOnlyAnalysesRefuseTheExactFieldInOneLine) {
   const std::string f = write("model_box_refuse.toml", kScenario);
-  for (const std::string cmd : {"analytic", "rotations", "find-integrals", "stability --axis z"}) {
+  for (const std::string cmd : {"analytic", "find-integrals", "stability --axis z"}) {
     const CliResult r = run_newtop(cmd + " " + f);
     EXPECT_EQ(r.code, 2) << cmd << ": " << r.out;
     EXPECT_NE(r.out.find("[field] kind: "), std::string::npos) << cmd << ": " << r.out;

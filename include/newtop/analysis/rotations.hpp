@@ -10,6 +10,8 @@
 
 namespace newtop {
 
+class Model;  // newtop/model/model.hpp
+
 /// The state of the uniform rotation with angular velocity ω = Ω γ about the unit axis γ.
 inline State permanent_rotation(const Body& body, const Vec3& gamma, double Omega) {
   return state_from_omega(body, Omega * gamma, gamma);
@@ -56,5 +58,11 @@ inline constexpr int kMaxRotationSamples = 100000;
 /// plane spanned by e_i and (I − I_i E)⁻¹ r0 where x0_i = 0. Throws InputError for a body with a
 /// rotor (k ≠ 0), whose rotations are outside spec §8.
 RotationFamilies permanent_rotations(const QuadraticModel& model, int samples);
+
+/// The permanent rotations in the model's own field: permanent_rotations(QuadraticModel) for the
+/// quadratic field; otherwise (k = 0) the axes where L(γ) = Ω² γ × Iγ, i.e. the curve
+/// γ·(L × (γ × Iγ)) = 0 found by bisection along 2·samples meridians (each in 2·samples arcs),
+/// in `cone` with Ω² = L·(γ × Iγ)/|γ × Iγ|², and the principal axes where L = 0 (any Ω).
+RotationFamilies permanent_rotations(const Model& model, int samples);
 
 }  // namespace newtop
