@@ -101,8 +101,8 @@ Eigen::Matrix2d sphere_hessian(const Model& model, const Vec3& gamma);
 
 /// The critical points of V on the sphere reached from `starts` by Levenberg–Marquardt on the
 /// moment L(γ) = 0 (tangent steps, renormalised), deduplicated, typed from sphere_hessian and
-/// sorted by increasing κ = γ·∂V/∂γ (as find_equilibria). `staude_residual` is NaN (the Staude cone is the quadratic field's).
-/// Every orientation is an equilibrium when L vanishes at every start.
+/// sorted by increasing κ = γ·∂V/∂γ (as find_equilibria). `staude_residual` is NaN (the Staude cone
+/// is the quadratic field's). Every orientation is an equilibrium when L vanishes at every start.
 EquilibriumSet sphere_equilibria(const Model& model, const std::vector<Vec3>& starts);
 
 /// Every equilibrium of a model in its own field: find_equilibria(QuadraticModel) for the
