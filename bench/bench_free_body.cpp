@@ -15,8 +15,8 @@ namespace {
 
 using namespace newtop;
 
-const Model kModel{Body::from_principal({1.0, 1.6, 2.1}, 1.0, Vec3::Zero()),
-                   QuadraticField::coulomb(0.0, 0.5)};
+const QuadraticModel kModel{Body::from_principal({1.0, 1.6, 2.1}, 1.0, Vec3::Zero()),
+                            QuadraticField::coulomb(0.0, 0.5)};
 const State kStart =
     state_from_omega(kModel.body, {0.4, -0.7, 1.2}, Vec3(0.3, 0.5, 0.8).normalized());
 constexpr double kT = 10.0;

@@ -20,13 +20,13 @@ namespace {
 
 using namespace newtop;
 
-Model bench_model() {
-  return Model{
+QuadraticModel bench_model() {
+  return QuadraticModel{
       Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3(0.3, 0.2, 0.1), Vec3(0.1, -0.2, 0.05)),
       QuadraticField::coulomb(1.0, 0.5)};
 }
 
-State bench_state(const Model& m) {
+State bench_state(const QuadraticModel& m) {
   return state_from_omega(m.body, Vec3(0.5, 1.1, -0.4), Vec3(0.48, -0.6, 0.64));
 }
 
@@ -57,7 +57,7 @@ Steps newtop_steps(S stepper) {
 
 // The peer: odeint's runge_kutta4 on std::array with the right-hand side written out by hand.
 Steps odeint_rk4_steps() {
-  const Model m = bench_model();
+  const QuadraticModel m = bench_model();
   return [rhs = wp::QuadraticRhs<double>(m), y = to_ode(bench_state(m)),
           rk4 = boost::numeric::odeint::runge_kutta4<OdeState>(), t = 0.0](std::int64_t n) mutable {
     for (std::int64_t i = 0; i < n; ++i) {

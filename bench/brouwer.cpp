@@ -23,12 +23,12 @@ namespace {
 using namespace newtop;
 using LD = long double;
 
-Model brouwer_model() {
-  return Model{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3::Zero()),
-               QuadraticField::coulomb(0.0, 1.0)};
+QuadraticModel brouwer_model() {
+  return QuadraticModel{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3::Zero()),
+                        QuadraticField::coulomb(0.0, 1.0)};
 }
 
-State start(const Model& m, int run) {
+State start(const QuadraticModel& m, int run) {
   const double d = 0.003 * run;
   return state_from_omega(m.body, Vec3(0.05 + d, -0.1, 0.12 - d),
                           Vec3(1.0, 0.15 + d, -0.1).normalized());
@@ -38,7 +38,8 @@ State start(const Model& m, int run) {
 // (sub_flows.hpp, instantiated for long double), the kick of the quadratic field in long double.
 class Shadow {
  public:
-  Shadow(const Model& m, const CompositionTable& t, const SplitOrdering& o, const State& x0)
+  Shadow(const QuadraticModel& m, const CompositionTable& t, const SplitOrdering& o,
+         const State& x0)
       : o_(o), c_(splitting_coefficients(t, o)), f_(split_frame(m.body, o)) {
     for (int w = 0; w < 3; ++w) {
       const int i = f_.axis[w];
@@ -117,7 +118,7 @@ int main(int argc, char** argv) {
   const double h = argc > 3 ? std::atof(argv[3]) : 0.01;
   const bool shadow = argc > 4 ? std::atoi(argv[4]) != 0 : true;
   FILE* data = argc > 5 ? std::fopen(argv[5], "w") : nullptr;
-  const Model m = brouwer_model();
+  const QuadraticModel m = brouwer_model();
   const CompositionTable& table = composition_table("splitting2");
   const SplitOrdering order = default_ordering(table);
   std::vector<std::int64_t> checks;

@@ -34,7 +34,7 @@ struct Method {
 
 // Tracks max |E − E0| / |E0| along a run.
 struct EnergyWatch {
-  const Model* m;
+  const QuadraticModel* m;
   double e0, worst = 0.0;
   void operator()(const State& x) {
     worst = std::max(worst, std::abs(energy(*m, x) - e0) / std::abs(e0));
@@ -103,7 +103,7 @@ std::vector<Method> methods(bool exact_allowed) {
 // --- regimes -------------------------------------------------------------------------------------
 
 Regime generic() {
-  Model m{
+  QuadraticModel m{
       Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3(0.3, 0.2, 0.1), Vec3(0.1, -0.2, 0.05)),
       QuadraticField::coulomb(1.0, 0.5)};
   const State x0 = state_from_omega(m.body, Vec3(0.5, 1.1, -0.4), Vec3(0.48, -0.6, 0.64));
@@ -119,8 +119,8 @@ Regime generic() {
 // A spinning satellite (fixed point at the centre of mass: r0 = 0, k = 0) about its largest axis
 // at Ω = 1 with a nutation of 0.1 rad, in a gravity gradient λ = ratio Ω².
 Regime fast_spin(double ratio, std::string name) {
-  Model m{Body::from_principal(Vec3(1.0, 1.2, 1.5), 1.0, Vec3::Zero()),
-          QuadraticField::coulomb(0.0, ratio)};
+  QuadraticModel m{Body::from_principal(Vec3(1.0, 1.2, 1.5), 1.0, Vec3::Zero()),
+                   QuadraticField::coulomb(0.0, ratio)};
   const Vec3 w = Vec3(0.08, -0.06, 1.0).normalized();
   const State x0 = state_from_omega(m.body, w, Vec3(0.3, -0.5, 0.8).normalized());
   char d[200];
@@ -135,8 +135,8 @@ Regime fast_spin(double ratio, std::string name) {
 // Libration about the stable equilibrium γ = e_x (least moment) of a gravity gradient λ = 1
 // (time unit 1/√λ), amplitude about 0.2 rad.
 Regime libration() {
-  Model m{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3::Zero()),
-          QuadraticField::coulomb(0.0, 1.0)};
+  QuadraticModel m{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3::Zero()),
+                   QuadraticField::coulomb(0.0, 1.0)};
   const State x0 =
       state_from_omega(m.body, Vec3(0.05, -0.1, 0.12), Vec3(1.0, 0.15, -0.1).normalized());
   return {"c",

@@ -26,7 +26,7 @@ inline double cpu_seconds() {
 struct Regime {
   std::string name;         // a, b3, b5, c
   std::string description;  // for the table heading
-  Model model;
+  QuadraticModel model;
   State x0;
   double T;      // span
   double h_max;  // largest step tried by the fixed-step methods
@@ -38,7 +38,7 @@ template <class Real>
 struct QuadraticRhs {
   std::array<Real, 3> inv_i, k, b, li;  // 1/I, k, M g r0, λ I
 
-  explicit QuadraticRhs(const Model& m) {
+  explicit QuadraticRhs(const QuadraticModel& m) {
     for (int i = 0; i < 3; ++i) {
       inv_i[i] = Real(1) / Real(m.body.inertia()[i]);
       k[i] = Real(m.body.gyrostat()[i]);

@@ -107,9 +107,9 @@ io::Json vec_json(const Vec3& v) { return io::Json::array({v.x(), v.y(), v.z()})
 
 /// The body's shape for the page, every coordinate in the principal axes (body frame).
 io::Json shape_json(const io::Scenario& sc) {
-  if (!sc.exact.mass_model) return {{"kind", "inertia_ellipsoid"}};
-  const MassModel& mm = *sc.exact.mass_model;
-  const Mat3 to_body = sc.model.body.principal_axes().transpose();
+  if (!sc.model.mass_model()) return {{"kind", "inertia_ellipsoid"}};
+  const MassModel& mm = *sc.model.mass_model();
+  const Mat3 to_body = sc.model.body().principal_axes().transpose();
   const double radius = max_radius(mm) > 0.0 ? max_radius(mm) : 1.0;
   return std::visit(
       [&](const auto& m) -> io::Json {
@@ -144,7 +144,7 @@ io::Json shape_json(const io::Scenario& sc) {
 }
 
 io::Json body_json(const io::Scenario& sc) {
-  const Body& b = sc.model.body;
+  const Body& b = sc.model.body();
   return {{"inertia", vec_json(b.inertia())},
           {"gyrostat", vec_json(b.gyrostat())},
           {"center_of_mass", vec_json(b.center_of_mass())},

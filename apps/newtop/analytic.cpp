@@ -21,6 +21,7 @@
 #include "newtop/integrate/methods.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
+#include "summary.hpp"
 #include "times_option.hpp"
 
 namespace newtop::app {
@@ -132,7 +133,7 @@ void add_brun_details(io::Json& j, const BrunCase& b, const std::vector<double>&
 /// Brun's case off the level f = 0 (unsolved): the spectral curve of the Lax pair, v² = P(u),
 /// ξ² = N(u) + 2√λ f v, with the coefficients of D = N² − 4λf² P and its roots; null when the
 /// level has no such curve (equal moments).
-io::Json brun_spectral_json(const Model& model, const State& x0) {
+io::Json brun_spectral_json(const QuadraticModel& model, const State& x0) {
   BrunCurve k;
   try {
     k = brun_level(model, x0);
@@ -192,12 +193,12 @@ Comparison compare(const io::Scenario& sc, const AnalyticSolution& sol,
                    const std::vector<double>& times) {
   Comparison c;
   if (times.empty()) return c;
-  const Body& b = sc.model.body;
+  const Body& b = sc.model.body();
   std::vector<std::optional<State>> numeric(times.size());
   MethodSettings ref{"rkf78", 0.0, kReferenceTol, kReferenceTol, std::nullopt};
   IntegrateOptions opt;
   if (sc.integrate.max_steps) opt.max_steps = *sc.integrate.max_steps;
-  c.reference = run_method_sampled(ref, sc.model, sc.initial, 0.0, times.back(),
+  c.reference = run_method_sampled(ref, sc.model.quadratic(), sc.initial, 0.0, times.back(),
                                    OutputTimes::list(times, 0.0, times.back()), opt,
                                    [&](std::int64_t k, double, const State& x) { numeric[k] = x; });
   for (std::size_t k = 0; k < times.size(); ++k) {
@@ -245,7 +246,8 @@ void print_summary(const io::Scenario& sc, const AnalyticDetection& det, const i
 
 int run(const AnalyticArgs& a) {
   const io::Scenario sc = io::load_scenario(a.scenario);
-  const AnalyticDetection det = detect_analytic_case(sc.model, sc.initial);
+  require_quadratic(sc.model, sc.source, "newtop analytic (the closed forms of spec §5)");
+  const AnalyticDetection det = detect_analytic_case(sc.model.quadratic(), sc.initial);
   io::Json j;
   j["case"] = to_string(det.kind);
   j["reason"] = det.reason;
@@ -254,8 +256,9 @@ int run(const AnalyticArgs& a) {
     j["turning_points"] = io::Json::array(), j["samples"] = io::Json::array();
     j["max_abs_error"] = nullptr;
     if (det.kind == AnalyticKind::brun)
-      j["spectral_curve"] = brun_spectral_json(sc.model, sc.initial);
+      j["spectral_curve"] = brun_spectral_json(sc.model.quadratic(), sc.initial);
     if (a.json) {
+      j["field"] = field_json(sc.model);
       std::cout << j.dump(2) << '\n';
     } else {
       std::cout << "newtop analytic " << sc.source << "\ncase      " << to_string(det.kind)
@@ -263,7 +266,7 @@ int run(const AnalyticArgs& a) {
     }
     return kExitOk;
   }
-  const AnalyticSolution sol = analytic_solution(sc.model, sc.initial, det.kind);
+  const AnalyticSolution sol = analytic_solution(sc.model.quadratic(), sc.initial, det.kind);
   std::string source;
   const std::vector<double> times = sample_times(a, sc, sol, source);
   add_case_details(j, sol, times);
@@ -283,6 +286,7 @@ int run(const AnalyticArgs& a) {
     j["reference"] = nullptr;
   }
   if (a.json) {
+    j["field"] = field_json(sc.model);
     std::cout << j.dump(2) << '\n';
   } else {
     print_summary(sc, det, j, c, times.size());

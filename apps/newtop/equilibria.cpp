@@ -3,6 +3,7 @@
 
 #include "newtop/analysis/equilibria.hpp"
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -33,8 +34,10 @@ io::Json equilibria_json(const EquilibriumSet& set) {
     j["potential"] = e.potential;
     j["type"] = to_string(e.type);
     j["hessian_eigenvalues"] = {e.hessian[0], e.hessian[1]};
-    j["staude_generator"] = io::to_json(e.gamma);
-    j["staude_residual"] = e.staude_residual;
+    if (!std::isnan(e.staude_residual)) {  // the quadratic field's Staude cone
+      j["staude_generator"] = io::to_json(e.gamma);
+      j["staude_residual"] = e.staude_residual;
+    }
     list.push_back(j);
   }
   io::Json circles = io::Json::array();
@@ -58,7 +61,7 @@ io::Json equilibria_json(const EquilibriumSet& set) {
   return j;
 }
 
-void print_equilibria(std::ostream& os, const EquilibriumSet& set) {
+void print_equilibria(std::ostream& os, const EquilibriumSet& set, FieldKind kind) {
   if (set.every_orientation) {
     os << "V is constant on the sphere: every orientation is an equilibrium\n";
     return;
@@ -81,7 +84,12 @@ void print_equilibria(std::ostream& os, const EquilibriumSet& set) {
      << set.maxima << " = " << set.euler_characteristic()
      << (set.count_rule_holds() ? " (holds)" : " (does not apply: degenerate points or families)")
      << "\n";
-  os << "each gamma is the generator of the Staude cone gamma.(I gamma x r0) = 0 through it\n";
+  if (kind == FieldKind::quadratic) {
+    os << "each gamma is the generator of the Staude cone gamma.(I gamma x r0) = 0 through it\n";
+  } else {
+    os << "found on the sphere from the quadratic model's equilibria and " << kSphereStarts
+       << " lattice starts; types from the Hessian of the " << to_string(kind) << " field\n";
+  }
   if (!set.equilibria.empty()) {
     os << "newtop stability SCENARIO --equilibrium K analyses the K-th (K = 1 to "
        << set.equilibria.size() << ")\n";
@@ -95,12 +103,13 @@ int run(const EquilibriaArgs& a) {
   if (a.json) {
     io::Json j = equilibria_json(set);
     j["model"] = model_json(sc.model);
+    j["field"] = field_json(sc.model);
     print_json(std::cout, j);
     return kExitOk;
   }
   std::cout << "newtop equilibria " << sc.source << "\n";
   print_model(std::cout, sc.model);
-  print_equilibria(std::cout, set);
+  print_equilibria(std::cout, set, sc.model.kind());
   return kExitOk;
 }
 

@@ -11,6 +11,7 @@
 #include "newtop/exact/multipole.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
+#include "summary.hpp"
 
 namespace newtop::app {
 namespace {
@@ -126,23 +127,25 @@ void print_values(const char* name, const Values& x) {
 
 int run(const FieldArgs& a) {
   const io::Scenario sc = io::load_scenario(a.scenario);
-  const io::ExactSettings& e = sc.exact;
-  if (!e.mass_model)
+  const std::shared_ptr<const MassModel>& mass_model = sc.model.mass_model();
+  if (!mass_model)
     throw InputError(sc.source + ": [mass_model]: missing: newtop field needs a mass model");
-  if (e.kind == io::FieldKind::quadratic && !a.R) {
+  const FieldKind kind = sc.model.kind();
+  const CentreParameters centre = centre_parameters(sc.model);
+  if (kind == FieldKind::quadratic && !a.R) {
     throw InputError(sc.source +
                      ": [field] kind: expected \"exact\" or \"multipole\" with mu and R, "
                      "or give --R");
   }
   // Without an exact [field] (only --R) the centre has unit mu.
-  const double mu = e.kind == io::FieldKind::quadratic ? 1.0 : e.mu;
-  const double R = a.R.value_or(e.R);
-  const Body& body = sc.model.body;
+  const double mu = kind == FieldKind::quadratic ? 1.0 : centre.mu;
+  const double R = a.R.value_or(centre.R);
+  const Body& body = sc.model.body();
   const Mat3& P = body.principal_axes();
   const Vec3 gamma = P.transpose() * parse_gamma(a.gamma);  // user frame → principal axes
   auto at = [&](double r) {
-    const ExactField x = ExactField::make(e.mass_model, mu, r, P);
-    const MultipoleField q = MultipoleField::make(*e.mass_model, 3, mu, r, P);
+    const ExactField x = ExactField::make(mass_model, mu, r, P);
+    const MultipoleField q = MultipoleField::make(*mass_model, 3, mu, r, P);
     return std::pair{Values{field_values(x, gamma), hessian_gamma(body, x, gamma)},
                      Values{field_values(q, gamma), hessian_gamma(body, q, gamma)}};
   };
@@ -151,13 +154,13 @@ int run(const FieldArgs& a) {
   j["gamma"] = io::to_json(gamma);
   j["mu"] = mu;
   j["R"] = R;
-  j["mass_properties"] = mass_properties_json(mass_properties(*e.mass_model), body);
+  j["field"] = field_json(sc.model);
+  j["mass_properties"] = mass_properties_json(mass_properties(*mass_model), body);
   const auto [ex, ap] = at(R);
   j["exact"] = values_json(ex);
   j["approx"] = values_json(ap);
   j["difference"] = values_json(difference(ex, ap));
-  const TruncationError t =
-      truncation_error(MultipoleField::make(*e.mass_model, 3, mu, R, P), gamma);
+  const TruncationError t = truncation_error(MultipoleField::make(*mass_model, 3, mu, R, P), gamma);
   j["approx_truncation_error"] = {{"next_term", t.next_term}, {"bound", t.bound}};
   if (a.scan) {
     const Scan s = parse_scan(*a.scan);

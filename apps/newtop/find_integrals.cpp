@@ -12,6 +12,7 @@
 #include "newtop/io/output.hpp"
 #include "newtop/io/potential_file.hpp"
 #include "newtop/io/scenario.hpp"
+#include "summary.hpp"
 
 namespace newtop::app {
 namespace {
@@ -66,15 +67,20 @@ void print_search(const IntegralSearch& s) {
 
 int run(const FindArgs& a) {
   const io::Scenario sc = io::load_scenario(a.scenario);
+  if (!a.potential) {
+    require_quadratic(sc.model, sc.source, "newtop find-integrals (without --potential)");
+  }
   const SearchOptions opt{.degree = a.degree, .points = a.points};
   const IntegralSearch s =
       a.potential ? find_integrals(
                         BasicModel<PolynomialPotential>{
-                            sc.model.body, io::load_potential(*a.potential, sc.model.body)},
+                            sc.model.body(), io::load_potential(*a.potential, sc.model.body())},
                         opt)
-                  : find_integrals(sc.model, opt);
+                  : find_integrals(sc.model.quadratic(), opt);
   if (a.json) {
-    std::cout << search_json(s).dump(2) << '\n';
+    io::Json j = search_json(s);
+    if (!a.potential) j["field"] = field_json(sc.model);
+    std::cout << j.dump(2) << '\n';
   } else {
     std::cout << "newtop find-integrals " << sc.source
               << (a.potential ? " with V(gamma) from " + *a.potential : std::string()) << "\n";

@@ -28,6 +28,7 @@ int run(const IntegralsArgs& a) {
     j["integrals"] = io::to_json(v);
     j["conserved"] = conserved;
     j["model"] = model_json(sc.model);
+    j["field"] = field_json(sc.model);
     print_json(std::cout, j);
     return kExitOk;
   }

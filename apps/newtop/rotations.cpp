@@ -47,7 +47,7 @@ io::Json rotations_json(const RotationFamilies& f) {
   return j;
 }
 
-void print_rotations(std::ostream& os, const RotationFamilies& f) {
+void print_rotations(std::ostream& os, const RotationFamilies& f, FieldKind kind) {
   os << "permanent rotations omega = Omega gamma (spec §8)\n";
   for (const auto& a : f.principal_axes) {
     os << "  principal axis gamma = " << format_vector(a) << ": any Omega\n";
@@ -61,8 +61,9 @@ void print_rotations(std::ostream& os, const RotationFamilies& f) {
   } else if (!f.cone.empty()) {
     std::size_t admissible = 0;
     for (const auto& c : f.cone) admissible += c.admissible;
-    os << "  Staude cone gamma.(I gamma x r0) = 0: " << f.cone.size() << " sampled axes, "
-       << admissible << " admissible (Omega^2 >= 0)\n";
+    os << (kind == FieldKind::quadratic ? "  Staude cone gamma.(I gamma x r0) = 0: "
+                                        : "  axes with L(gamma) = Omega^2 gamma x I gamma: ")
+       << f.cone.size() << " sampled axes, " << admissible << " admissible (Omega^2 >= 0)\n";
   }
 }
 
@@ -77,12 +78,13 @@ int run(const RotationsArgs& a) {
     io::Json j = rotations_json(f);
     if (a.out) j["csv"] = *a.out;
     j["model"] = model_json(sc.model);
+    j["field"] = field_json(sc.model);
     print_json(std::cout, j);
     return kExitOk;
   }
   std::cout << "newtop rotations " << sc.source << "\n";
   print_model(std::cout, sc.model);
-  print_rotations(std::cout, f);
+  print_rotations(std::cout, f, sc.model.kind());
   if (a.out) std::cout << "cone samples written to " << *a.out << "\n";
   return kExitOk;
 }

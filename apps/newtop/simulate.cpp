@@ -63,12 +63,6 @@ struct DriftTracker {
   double max_m = 0;
 };
 
-const char* kind_name(io::FieldKind k) {
-  return k == io::FieldKind::exact       ? "exact"
-         : k == io::FieldKind::multipole ? "multipole"
-                                         : "quadratic";
-}
-
 /// The time arguments and, for fixed-step methods, the step count (a run that could never reach
 /// t_end is bad input, not an outcome).
 void check_span(const io::Scenario& sc, const RunPlan& p) {
@@ -172,22 +166,19 @@ void print_report(const SimulateArgs& a, const io::Scenario& sc, SimulationRepor
     return;
   }
   const State& x = rep.outcome.state;
-  const Vec3 dw = omega(sc.model.body, x) - omega(sc.model.body, q->state);
+  const Body& body = sc.model.body();
+  const Vec3 dw = omega(body, x) - omega(body, q->state);
   const double dg = (x.gamma - q->state.gamma).norm();
   if (a.json) {
     io::Json j = simulation_json(rep);
-    j["field"] = {{"kind", kind_name(sc.exact.kind)}, {"mu", sc.exact.mu}, {"R", sc.exact.R}};
-    if (sc.exact.kind == io::FieldKind::multipole) j["field"]["order"] = sc.exact.order;
     j["quadratic_comparison"] = {{"outcome", std::string(to_string(q->status))},
                                  {"gamma", io::to_json(q->state.gamma)},
-                                 {"omega", io::to_json(omega(sc.model.body, q->state))},
+                                 {"omega", io::to_json(omega(body, q->state))},
                                  {"difference_gamma", dg},
                                  {"difference_omega", dw.norm()}};
     print_json(std::cout, j);
     return;
   }
-  rep.field_line = std::string(kind_name(sc.exact.kind)) + " (mu = " + format_number(sc.exact.mu) +
-                   ", R = " + format_number(sc.exact.R) + ")";
   print_simulation_summary(std::cout, rep);
   std::cout << "quadratic model, same method: |gamma - gamma_q| = " << format_number(dg)
             << "   |omega - omega_q| = " << format_number(dw.norm()) << "\n";
@@ -200,16 +191,17 @@ int run_in(const SimulateArgs& a, const io::Scenario& sc, const M& model) {
   std::unique_ptr<io::CsvTrajectory> csv;
   if (plan.out_path) {
     file = std::make_unique<io::AtomicFile>(*plan.out_path, sc.input_files);
-    // The CSV's integral columns are those of the quadratic model (docs/exact_field.md).
+    // The CSV's integral columns are those of the run's own field.
     csv = std::make_unique<io::CsvTrajectory>(file->stream(), sc.model);
   }
   DriftTracker<M> drift(model, sc.initial);
   const Outcome out = run_plan(plan, model, sc.initial, drift, csv.get());
   // Exact or multipole field: the same run in the quadratic model, for comparison.
   std::optional<Outcome> q;
-  if (sc.exact.kind != io::FieldKind::quadratic) {
+  if (sc.model.kind() != FieldKind::quadratic) {
     auto check = [](double t, const State&) { throw_if_interrupted(t); };
-    q = run_method(plan.method, sc.model, sc.initial, plan.t0, plan.t_end, plan.options, check);
+    q = run_method(plan.method, quadratic_approximation(sc.model), sc.initial, plan.t0, plan.t_end,
+                   plan.options, check);
   }
   throw_if_interrupted(out.t);
   if (file) file->commit();
@@ -223,24 +215,6 @@ int run_in(const SimulateArgs& a, const io::Scenario& sc, const M& model) {
   return out.status == Status::finished ? kExitOk : kExitIncomplete;
 }
 
-/// The field of the run: the quadratic model, or the exact field / its expansion of [mass_model].
-template <class Run>
-auto with_field(const io::Scenario& sc, Run&& run) {
-  const io::ExactSettings& e = sc.exact;
-  const Mat3& P = sc.model.body.principal_axes();
-  switch (e.kind) {
-    case io::FieldKind::exact:
-      return run(
-          BasicModel<ExactField>{sc.model.body, ExactField::make(e.mass_model, e.mu, e.R, P)});
-    case io::FieldKind::multipole:
-      return run(BasicModel<MultipoleField>{
-          sc.model.body, MultipoleField::make(*e.mass_model, e.order, e.mu, e.R, P)});
-    case io::FieldKind::quadratic:
-      break;
-  }
-  return run(sc.model);
-}
-
 int run(const SimulateArgs& a) {
   if (io::is_orbit_scenario(a.scenario)) {
     return orbit_simulate(a.scenario, {a.t_end, a.step, a.tol, a.method, a.out, a.every, a.json});
@@ -248,7 +222,7 @@ int run(const SimulateArgs& a) {
   const io::Scenario sc = io::load_scenario(a.scenario);
   const InterruptGuard guard;
   try {
-    return with_field(sc, [&](const auto& model) { return run_in(a, sc, model); });
+    return visit_model(sc.model, [&](const auto& model) { return run_in(a, sc, model); });
   } catch (const Interrupted& e) {
     std::cerr << "newtop: interrupted by " << signal_name(e.signal)
               << " at t = " << format_number(e.t)

@@ -44,7 +44,7 @@ std::optional<int> parse_axis(const std::optional<std::string>& axis) {
 
 /// The principal axis i with γ = e_i and ω ∥ e_i (or ω = 0), where the spin family about it is a
 /// fixed point for every Ω (M g r0 along e_i).
-std::optional<int> spin_axis_of(const Model& model, const State& s) {
+std::optional<int> spin_axis_of(const QuadraticModel& model, const State& s) {
   const Vec3 w = omega(model.body, s);
   const Vec3 b = model.body.mass() * model.field.g * model.body.center_of_mass();
   for (int i = 0; i < 3; ++i) {
@@ -77,7 +77,7 @@ State listed_equilibrium(const io::Scenario& sc, int k) {
     throw InputError("--equilibrium: expected 1 to " + std::to_string(count) +
                      " (the equilibria listed by newtop equilibria), found " + std::to_string(k));
   }
-  return state_from_omega(sc.model.body, Vec3::Zero(), set.equilibria[k - 1].gamma);
+  return state_from_omega(sc.model.body(), Vec3::Zero(), set.equilibria[k - 1].gamma);
 }
 
 /// The state to analyse: --axis (exact), --equilibrium or [initial] (polished by Newton).
@@ -86,7 +86,7 @@ Chosen chosen_state(const io::Scenario& sc, const StabilityArgs& a) {
   if (a.omega && !axis) throw InputError("--omega: needs --axis x|y|z to say which axis spins");
   if (a.equilibrium && axis) throw InputError("--equilibrium: give either --equilibrium or --axis");
   if (axis) {
-    const State s = principal_spin(sc.model.body, *axis, a.omega.value_or(0.0));
+    const State s = principal_spin(sc.model.body(), *axis, a.omega.value_or(0.0));
     const double res = fixed_point_residual(sc.model, s);
     if (!(res <= kFixedPointTolerance)) {
       throw InputError("--axis " + *a.axis + ": expected a permanent rotation, found residual " +
@@ -110,30 +110,39 @@ Chosen chosen_state(const io::Scenario& sc, const StabilityArgs& a) {
              : "Newton's method stops at residual " + format_number(p.residual)) +
         "; see newtop equilibria (and --equilibrium K) / rotations, or use --axis and --omega");
   }
-  return {p.state, spin_axis_of(sc.model, p.state), p};
+  // The spin families about principal axes (and their thresholds) are the quadratic field's.
+  const std::optional<int> spin_axis = sc.model.kind() == FieldKind::quadratic
+                                           ? spin_axis_of(sc.model.quadratic(), p.state)
+                                           : std::nullopt;
+  return {p.state, spin_axis, p};
 }
 
 io::Json report(const io::Scenario& sc, const Chosen& c) {
-  const Model& m = sc.model;
+  // The field's own linearisation; the spin thresholds only with an axis (the quadratic field).
   const State& s = c.state;
   const std::optional<int> axis = c.axis;
-  const Spectrum sp = linear_stability(m, s);
+  const Spectrum sp = linear_stability(sc.model, s);
   io::Json j;
   j["eigenvalues"] = io::Json::array();
   for (const auto& z : sp.eigenvalues) j["eigenvalues"].push_back({z.real(), z.imag()});
   j["max_real_part"] = sp.max_real_part;
   j["linearly_stable"] = sp.linearly_stable;
   j["lyapunov_stable"] = optional_json(sp.lyapunov_stable);
-  const bool no_offset = m.body.mass() * m.field.g * m.body.center_of_mass().norm() == 0.0;
-  j["threshold_omega_formula"] = optional_json(
-      axis && no_offset ? beletsky_threshold(m.body, m.field.lambda_, *axis) : std::nullopt);
-  j["threshold_omega_numeric"] =
-      optional_json(axis ? numeric_threshold(m, *axis) : std::optional<double>{});
+  const Body& body = sc.model.body();
+  std::optional<double> formula, numeric;
+  if (axis) {
+    const QuadraticModel& m = sc.model.quadratic();
+    const bool no_offset = m.body.mass() * m.field.g * m.body.center_of_mass().norm() == 0.0;
+    if (no_offset) formula = beletsky_threshold(m.body, m.field.lambda_, *axis);
+    numeric = numeric_threshold(m, *axis);
+  }
+  j["threshold_omega_formula"] = optional_json(formula);
+  j["threshold_omega_numeric"] = optional_json(numeric);
   j["axis"] = axis ? io::Json(std::string(1, "xyz"[*axis])) : io::Json(nullptr);
-  j["axis_class"] = axis ? io::Json(to_string(axis_class(m.body, *axis))) : io::Json(nullptr);
-  j["omega"] = io::to_json(omega(m.body, s));
+  j["axis_class"] = axis ? io::Json(to_string(axis_class(body, *axis))) : io::Json(nullptr);
+  j["omega"] = io::to_json(omega(body, s));
   j["gamma"] = io::to_json(s.gamma);
-  j["residual"] = fixed_point_residual(m, s);
+  j["residual"] = fixed_point_residual(sc.model, s);
   j["polish"] = {{"residual_given", c.polish.residual_given},
                  {"correction", c.polish.correction},
                  {"iterations", c.polish.iterations}};
@@ -210,6 +219,13 @@ int run(const StabilityArgs& a) {
   const std::optional<std::pair<Range, Range>> grid =
       a.scan ? std::optional(parse_grid(*a.scan)) : std::nullopt;
   const io::Scenario sc = io::load_scenario(a.scenario);
+  if (a.axis || a.scan || a.scan_omega) {
+    require_quadratic(sc.model, sc.source,
+                      std::string(a.axis   ? "--axis"
+                                  : a.scan ? "--scan"
+                                           : "--scan-omega") +
+                          " (spins about principal axes and their thresholds)");
+  }
   const Chosen c = chosen_state(sc, a);
   if ((a.scan_omega || a.scan) && !c.axis) {
     throw InputError(
@@ -221,10 +237,11 @@ int run(const StabilityArgs& a) {
   if (a.out) file = std::make_unique<io::AtomicFile>(*a.out, sc.input_files);
   io::Json j = report(sc, c);
   if (a.equilibrium) j["equilibrium"] = *a.equilibrium;
-  if (omega_range) j["scan"] = omega_scan(sc.model, *c.axis, *omega_range, file.get());
-  if (grid) grid_scan(sc.model, *c.axis, a.omega.value_or(0.0), *grid, *file);
+  if (omega_range) j["scan"] = omega_scan(sc.model.quadratic(), *c.axis, *omega_range, file.get());
+  if (grid) grid_scan(sc.model.quadratic(), *c.axis, a.omega.value_or(0.0), *grid, *file);
   if (a.out) j["csv"] = *a.out;
   j["model"] = model_json(sc.model);
+  j["field"] = field_json(sc.model);
   if (a.json) {
     print_json(std::cout, j);
     return kExitOk;

@@ -13,7 +13,7 @@ namespace newtop::app {
 namespace {
 
 /// One grid point of --scan: the model with the parameters replaced, or nullopt if unphysical.
-std::optional<Spectrum> grid_point(const Model& base, int axis, double omega0,
+std::optional<Spectrum> grid_point(const QuadraticModel& base, int axis, double omega0,
                                    const std::vector<std::pair<std::string, double>>& values) {
   Vec3 I = base.body.inertia();
   double lambda = base.field.lambda_, w = omega0;
@@ -25,8 +25,8 @@ std::optional<Spectrum> grid_point(const Model& base, int axis, double omega0,
     if (name == "C") I.z() = v;
   }
   try {
-    const Model m{Body::from_principal(I, base.body.mass(), base.body.center_of_mass()),
-                  QuadraticField::coulomb(base.field.g, lambda)};
+    const QuadraticModel m{Body::from_principal(I, base.body.mass(), base.body.center_of_mass()),
+                           QuadraticField::coulomb(base.field.g, lambda)};
     return spin_stability(m, axis, w);
   } catch (const InputError&) {
     return std::nullopt;  // e.g. the triangle inequality fails at this point of the grid
@@ -75,7 +75,7 @@ std::pair<Range, Range> parse_grid(const std::string& spec) {
   return {r1, r2};
 }
 
-io::Json omega_scan(const Model& model, int axis, const Range& r, io::AtomicFile* file) {
+io::Json omega_scan(const QuadraticModel& model, int axis, const Range& r, io::AtomicFile* file) {
   const auto points = scan_omega(model, axis, r.lo, r.hi, r.n);
   if (file) {
     file->stream() << "omega,max_real_part,linearly_stable,energy_casimir_stable\n";
@@ -98,8 +98,8 @@ io::Json omega_scan(const Model& model, int axis, const Range& r, io::AtomicFile
   return list;
 }
 
-void grid_scan(const Model& model, int axis, double omega0, const std::pair<Range, Range>& grid,
-               io::AtomicFile& file) {
+void grid_scan(const QuadraticModel& model, int axis, double omega0,
+               const std::pair<Range, Range>& grid, io::AtomicFile& file) {
   const auto& [r1, r2] = grid;
   file.stream() << r1.name << ',' << r2.name << ",max_real_part,verdict\n";
   for (int i = 0; i < r1.n; ++i) {

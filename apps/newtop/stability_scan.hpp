@@ -33,13 +33,13 @@ inline constexpr long long kMaxGridPoints = 1000000;
 /// Stability along Ω about `axis`: the JSON list, and the CSV
 /// `omega,max_real_part,linearly_stable,energy_casimir_stable` to `out` when given (opened by the
 /// caller before any work, committed here).
-io::Json omega_scan(const Model& model, int axis, const Range& r, io::AtomicFile* out);
+io::Json omega_scan(const QuadraticModel& model, int axis, const Range& r, io::AtomicFile* out);
 
 /// The two-parameter diagram to the CSV `out` (opened by the caller before any work, committed
 /// here): `P1,P2,max_real_part,verdict`, verdict stable, unstable or nonphysical (max_real_part
 /// nan there).
-void grid_scan(const Model& model, int axis, double omega0, const std::pair<Range, Range>& grid,
-               io::AtomicFile& out);
+void grid_scan(const QuadraticModel& model, int axis, double omega0,
+               const std::pair<Range, Range>& grid, io::AtomicFile& out);
 
 /// The --scan-omega list as a table of the human summary.
 void print_omega_scan(std::ostream& os, const io::Json& scan);

@@ -35,29 +35,72 @@ void print_json(std::ostream& os, io::Json j) {
 
 io::Json model_json(const Model& m) {
   io::Json j;
-  j["inertia"] = io::to_json(m.body.inertia());
-  j["mass"] = m.body.mass();
-  j["center_of_mass"] = io::to_json(m.body.center_of_mass());
-  j["gyrostat"] = io::to_json(m.body.gyrostat());
-  const Mat3& P = m.body.principal_axes();
+  const Body& b = m.body();
+  j["inertia"] = io::to_json(b.inertia());
+  j["mass"] = b.mass();
+  j["center_of_mass"] = io::to_json(b.center_of_mass());
+  j["gyrostat"] = io::to_json(b.gyrostat());
+  const Mat3& P = b.principal_axes();
   j["principal_axes"] =
       io::Json::array({io::to_json(P.col(0)), io::to_json(P.col(1)), io::to_json(P.col(2))});
-  j["g"] = m.field.g;
-  j["lambda"] = m.field.lambda_;
+  if (m.kind() == FieldKind::quadratic) {
+    j["g"] = m.quadratic().field.g;
+    j["lambda"] = m.quadratic().field.lambda_;
+  }
   clear_negative_zeros(j);  // also for the subcommands that dump their JSON themselves
   return j;
 }
 
+const char* mass_model_name(const MassModel& mm) {
+  static const char* const names[] = {"point_masses", "polyhedron", "ellipsoid"};
+  return names[mm.index()];
+}
+
+io::Json field_json(const Model& m) {
+  io::Json j;
+  j["kind"] = to_string(m.kind());
+  if (m.kind() == FieldKind::quadratic) {
+    j["g"] = m.quadratic().field.g;
+    j["lambda"] = m.quadratic().field.lambda_;
+  } else {
+    const CentreParameters c = centre_parameters(m);
+    j["mu"] = c.mu;
+    j["R"] = c.R;
+    if (m.kind() == FieldKind::multipole) j["order"] = c.order;
+  }
+  if (m.mass_model()) j["mass_model"] = mass_model_name(*m.mass_model());
+  clear_negative_zeros(j);
+  return j;
+}
+
+std::string field_line(const Model& m) {
+  if (m.kind() == FieldKind::quadratic) {
+    const QuadraticField& f = m.quadratic().field;
+    return "g = " + fmt(f.g) + "   lambda = " + fmt(f.lambda_);
+  }
+  const CentreParameters c = centre_parameters(m);
+  std::string line = std::string(to_string(m.kind())) + " (mu = " + fmt(c.mu) + ", R = " + fmt(c.R);
+  if (m.kind() == FieldKind::multipole) line += ", order = " + std::to_string(c.order);
+  if (m.mass_model()) line += std::string(", mass model: ") + mass_model_name(*m.mass_model());
+  return line + ")";
+}
+
 void print_model(std::ostream& os, const Model& m) {
-  os << "body      A, B, C = " << fmt(m.body.inertia()) << "   M = " << fmt(m.body.mass())
-     << "\n          r0 = " << fmt(m.body.center_of_mass()) << "   k = " << fmt(m.body.gyrostat())
-     << "\n";
-  if (!m.body.principal_axes().isIdentity(0.0)) {
-    const Mat3& P = m.body.principal_axes();
+  const Body& b = m.body();
+  os << "body      A, B, C = " << fmt(b.inertia()) << "   M = " << fmt(b.mass())
+     << "\n          r0 = " << fmt(b.center_of_mass()) << "   k = " << fmt(b.gyrostat()) << "\n";
+  if (!b.principal_axes().isIdentity(0.0)) {
+    const Mat3& P = b.principal_axes();
     os << "          principal axes (user frame): x' = " << fmt(Vec3(P.col(0)), 6)
        << "  y' = " << fmt(Vec3(P.col(1)), 6) << "  z' = " << fmt(Vec3(P.col(2)), 6) << "\n";
   }
-  os << "field     g = " << fmt(m.field.g) << "   lambda = " << fmt(m.field.lambda_) << "\n";
+  os << "field     " << field_line(m) << "\n";
+}
+
+void require_quadratic(const Model& m, const std::string& source, const std::string& what) {
+  if (m.kind() == FieldKind::quadratic) return;
+  throw InputError(source + ": [field] kind: " + what + " needs the quadratic field, found the " +
+                   field_line(m) + " field");
 }
 
 std::string CasimirCheck::warning() const {
@@ -69,7 +112,7 @@ std::string CasimirCheck::warning() const {
 
 io::Json simulation_json(const SimulationReport& r) {
   io::Json j;
-  const Vec3 w = omega(r.scenario.model.body, r.outcome.state);
+  const Vec3 w = omega(r.scenario.model.body(), r.outcome.state);
   j["scenario"] = r.scenario.source;
   j["method"] = r.method.name;
   const MethodInfo& info = method_info(r.method.name);
@@ -97,6 +140,7 @@ io::Json simulation_json(const SimulationReport& r) {
   j["conserved"] = conserved_integrals(r.scenario.model);
   j["model"] = model_json(r.scenario.model);
   if (r.csv_path) j["csv"] = *r.csv_path;
+  j["field"] = field_json(r.scenario.model);
   clear_negative_zeros(j);
   return j;
 }
@@ -105,7 +149,6 @@ void print_simulation_summary(std::ostream& os, const SimulationReport& r) {
   const Outcome& o = r.outcome;
   os << "newtop simulate " << r.scenario.source << "\n";
   print_model(os, r.scenario.model);
-  if (!r.field_line.empty()) os << "field     " << r.field_line << "\n";
   os << "method    " << r.method.name;
   if (method_info(r.method.name).kind == MethodKind::adaptive) {
     os << "  tol = " << fmt(r.method.abs_tol, 3);
@@ -115,7 +158,7 @@ void print_simulation_summary(std::ostream& os, const SimulationReport& r) {
   os << "\noutcome   " << to_string(o.status) << " at t = " << fmt(o.t) << " after " << o.steps
      << " steps";
   if (o.rejected) os << " (" << o.rejected << " rejected)";
-  os << "\nfinal     omega = " << fmt(omega(r.scenario.model.body, o.state))
+  os << "\nfinal     omega = " << fmt(omega(r.scenario.model.body(), o.state))
      << "\n          gamma = " << fmt(o.state.gamma) << "\n";
   os << "integral          initial                  final                    max |drift|\n";
   auto row = [&](const char* name, double a, double b, double d) {

@@ -34,7 +34,6 @@ struct SimulationReport {
   IntegralValues initial, final_values, max_drift;
   std::optional<std::string> csv_path;
   CasimirCheck casimir{};
-  std::string field_line{};  ///< exact or multipole field: "exact (mu = …, R = …)"
 };
 
 io::Json simulation_json(const SimulationReport& r);
@@ -44,8 +43,18 @@ void print_simulation_summary(std::ostream& os, const SimulationReport& r);
 /// the sign of a zero is never information in newtop's results).
 void print_json(std::ostream& os, io::Json j);
 
-/// Body and field parameters as the program understood them (principal axes).
+/// Body (principal axes) and, for the quadratic field, g and lambda, as the program understood
+/// them.
 io::Json model_json(const Model& m);
+/// The field of the run: {"kind": "quadratic", "g", "lambda"} or {"kind": "exact" | "multipole",
+/// "mu", "R"[, "order"]}, with "mass_model" (its kind) where the body derives from one.
+io::Json field_json(const Model& m);
+/// One line naming the field: "g = …   lambda = …" or "exact (mu = …, R = …, mass model: …)".
+std::string field_line(const Model& m);
+/// The body and a line "field     …" (field_line).
 void print_model(std::ostream& os, const Model& m);
+/// An analysis of the quadratic model only, asked of a model in another field: InputError naming
+/// the field (exit 2).
+void require_quadratic(const Model& m, const std::string& source, const std::string& what);
 
 }  // namespace newtop::app

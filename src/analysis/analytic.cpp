@@ -20,7 +20,7 @@ std::string to_string(AnalyticKind k) {
   return "none";
 }
 
-AnalyticDetection detect_analytic_case(const Model& model, const State& x0) {
+AnalyticDetection detect_analytic_case(const QuadraticModel& model, const State& x0) {
   if (euler_poinsot_holds(model)) {
     return {AnalyticKind::euler_poinsot, "free body: lambda = 0, M g r0 = 0, k = 0", true};
   }
@@ -50,7 +50,8 @@ AnalyticDetection detect_analytic_case(const Model& model, const State& x0) {
               "M g r0 = 0 and k = 0)"};
 }
 
-AnalyticSolution analytic_solution(const Model& model, const State& x0, AnalyticKind kind) {
+AnalyticSolution analytic_solution(const QuadraticModel& model, const State& x0,
+                                   AnalyticKind kind) {
   switch (kind) {
     case AnalyticKind::euler_poinsot:
       return euler_poinsot(model.body, x0);

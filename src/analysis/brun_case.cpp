@@ -64,7 +64,7 @@ void set_frequencies(BrunCase& b) {
 
 }  // namespace
 
-BrunCase brun_case(const Model& model, const State& x0) {
+BrunCase brun_case(const QuadraticModel& model, const State& x0) {
   BrunCase b;
   b.curve = brun_curve(model, x0);
   b.initial = brun_angles(b.curve, x0);

@@ -128,12 +128,12 @@ double brun_reduced_R(const BrunCurve& k, int s, double u) {
   return r;
 }
 
-bool brun_level_solvable(const Model& model, const State& x0) {
+bool brun_level_solvable(const QuadraticModel& model, const State& x0) {
   return brun_holds(model) && model.field.lambda_ != 0.0 &&
          std::abs(area(x0)) <= kLevelTolerance * std::max(1.0, x0.m.norm());
 }
 
-BrunCurve brun_level(const Model& model, const State& x0) {
+BrunCurve brun_level(const QuadraticModel& model, const State& x0) {
   if (!brun_holds(model) || model.field.lambda_ == 0.0) {
     throw InputError("case: Brun's case needs M g r0 = 0, k = 0 and lambda != 0");
   }
@@ -165,7 +165,7 @@ BrunCurve brun_level(const Model& model, const State& x0) {
   return k;
 }
 
-BrunCurve brun_curve(const Model& model, const State& x0) {
+BrunCurve brun_curve(const QuadraticModel& model, const State& x0) {
   BrunCurve k = brun_level(model, x0);
   check_level(k, x0);
   const State w = to_working_frame(k, x0);

@@ -34,7 +34,7 @@ struct Secular {
   std::vector<double> d_inactive;
 };
 
-Secular make_secular(const Model& model) {
+Secular make_secular(const QuadraticModel& model) {
   Secular s;
   s.b = model.body.mass() * model.field.g * model.body.center_of_mass();
   s.d = model.field.lambda_ * model.body.inertia();
@@ -127,7 +127,7 @@ Vec3 gamma_at(const Secular& s, double kappa) {
   return gamma.normalized();
 }
 
-void add_point(const Model& model, const Vec3& gamma, EquilibriumSet& set) {
+void add_point(const QuadraticModel& model, const Vec3& gamma, EquilibriumSet& set) {
   for (const auto& e : set.equilibria) {
     if ((e.gamma - gamma).norm() <= kSamePoint) return;
   }
@@ -135,7 +135,8 @@ void add_point(const Model& model, const Vec3& gamma, EquilibriumSet& set) {
 }
 
 /// κ = d_G for a group G whose components of b vanish (spec §7, "when a component x0_i = 0").
-void add_degenerate(const Model& model, const Secular& s, std::size_t k, EquilibriumSet& set) {
+void add_degenerate(const QuadraticModel& model, const Secular& s, std::size_t k,
+                    EquilibriumSet& set) {
   const double kappa = s.d_inactive[k];
   const auto& G = s.inactive[k];
   Vec3 fixed = Vec3::Zero();
@@ -175,7 +176,7 @@ const char* to_string(EquilibriumType t) {
   return "degenerate";
 }
 
-Eigen::VectorXd secular_polynomial(const Model& model) {
+Eigen::VectorXd secular_polynomial(const QuadraticModel& model) {
   const Secular s = make_secular(model);
   return polynomial(s.d_g, s.beta);
 }
@@ -196,7 +197,7 @@ std::vector<double> real_polynomial_roots(const Eigen::VectorXd& c, double imag_
   return roots;
 }
 
-Eigen::Matrix2d sphere_hessian(const Model& model, const Vec3& gamma, double kappa) {
+Eigen::Matrix2d sphere_hessian(const QuadraticModel& model, const Vec3& gamma, double kappa) {
   // Orthonormal basis (t1, t2) of the tangent plane γ⊥.
   const Vec3 helper = std::abs(gamma.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
   const Vec3 t1 = gamma.cross(helper).normalized();
@@ -207,7 +208,7 @@ Eigen::Matrix2d sphere_hessian(const Model& model, const Vec3& gamma, double kap
   return T.transpose() * L * T;
 }
 
-Equilibrium make_equilibrium(const Model& model, const Vec3& gamma) {
+Equilibrium make_equilibrium(const QuadraticModel& model, const Vec3& gamma) {
   const Vec3 grad = grad_gamma(model, gamma);
   const double kappa = gamma.dot(grad);
   const Eigen::Vector2d h =
@@ -230,7 +231,7 @@ Equilibrium make_equilibrium(const Model& model, const Vec3& gamma) {
   return {gamma, kappa, potential(model, gamma), type, h, staude};
 }
 
-EquilibriumSet find_equilibria(const Model& model) {
+EquilibriumSet find_equilibria(const QuadraticModel& model) {
   const Secular s = make_secular(model);
   EquilibriumSet set;
   if (s.scale == 0.0 || (s.d_g.empty() && s.inactive.size() == 1)) {

@@ -285,7 +285,7 @@ std::string to_string(const Monomial& m) {
   return s.empty() ? "1" : s;
 }
 
-IntegralSearch find_integrals(const Model& model, const SearchOptions& options) {
+IntegralSearch find_integrals(const QuadraticModel& model, const SearchOptions& options) {
   auto base = common_candidates(model, 2);
   if (brun_holds(model)) {
     base.push_back({"brun", 2, [&model](const Vec3& w, const Vec3& g) {

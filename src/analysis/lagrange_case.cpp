@@ -151,9 +151,9 @@ void refine_z0(LagrangeCase& s, double u0, double u_dot0) {
 
 }  // namespace
 
-bool lagrange_case_holds(const Model& model) { return lagrange_holds(model); }
+bool lagrange_case_holds(const QuadraticModel& model) { return lagrange_holds(model); }
 
-LagrangeQuartic lagrange_quartic(const Model& model, const State& x0) {
+LagrangeQuartic lagrange_quartic(const QuadraticModel& model, const State& x0) {
   const Body& body = model.body;
   const double A = body.A(), C = body.C();
   LagrangeQuartic Q;
@@ -170,7 +170,7 @@ LagrangeQuartic lagrange_quartic(const Model& model, const State& x0) {
   return Q;
 }
 
-LagrangeCase lagrange_case(const Model& model, const State& x0) {
+LagrangeCase lagrange_case(const QuadraticModel& model, const State& x0) {
   if (!lagrange_case_holds(model)) {
     throw InputError("body: the Lagrange case needs A = B, x0 = y0 = 0 and k1 = k2 = 0");
   }

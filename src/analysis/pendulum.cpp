@@ -190,7 +190,7 @@ double pendulum_potential(const Pendulum& p, double phi) {
   return p.mgx * c - p.mgy * s + 0.5 * p.lambda_ * (p.A * c * c + p.B * s * s);
 }
 
-bool pendulum_holds(const Model& model, const State& x0, std::string* why) {
+bool pendulum_holds(const QuadraticModel& model, const State& x0, std::string* why) {
   const Body& b = model.body;
   const Vec3 w = omega(b, x0);
   auto fail = [&](const std::string& m) {
@@ -210,7 +210,7 @@ bool pendulum_holds(const Model& model, const State& x0, std::string* why) {
   return true;
 }
 
-Pendulum pendulum(const Model& model, const State& x0) {
+Pendulum pendulum(const QuadraticModel& model, const State& x0) {
   std::string why;
   if (!pendulum_holds(model, x0, &why)) throw InputError("initial: plane pendulum motion: " + why);
   const Body& b = model.body;

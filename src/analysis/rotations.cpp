@@ -11,11 +11,11 @@ namespace {
 // unbounded (every Ω is admissible there).
 constexpr double kPrincipalAxis = 1e-9;
 
-Vec3 linear_term(const Model& model) {
+Vec3 linear_term(const QuadraticModel& model) {
   return model.body.mass() * model.field.g * model.body.center_of_mass();
 }
 
-void add_sample(const Model& model, const Vec3& v, RotationFamilies& out) {
+void add_sample(const QuadraticModel& model, const Vec3& v, RotationFamilies& out) {
   if (!(v.norm() > 0)) return;
   const Vec3 gamma = v.normalized();
   const Vec3& I = model.body.inertia();
@@ -33,7 +33,7 @@ Vec3 generator(const Vec3& I, const Vec3& b, double tau) {
           b.z() * (I.x() - tau) * (I.y() - tau)};
 }
 
-void sample_cone(const Model& model, const Vec3& b, int samples, RotationFamilies& out) {
+void sample_cone(const QuadraticModel& model, const Vec3& b, int samples, RotationFamilies& out) {
   const Vec3& I = model.body.inertia();
   const double tol = kRotationDegeneracy * b.norm();
   const Vec3 coef{b.x() * (I.z() - I.y()), b.y() * (I.x() - I.z()), b.z() * (I.y() - I.x())};
@@ -78,14 +78,14 @@ double staude_cone(const Body& body, const Vec3& gamma) {
   return gamma.dot(body.inertia().cwiseProduct(gamma).cross(body.center_of_mass()));
 }
 
-double cone_omega_squared(const Model& model, const Vec3& gamma) {
+double cone_omega_squared(const QuadraticModel& model, const Vec3& gamma) {
   const Vec3 gIg = gamma.cross(model.body.inertia().cwiseProduct(gamma));
   const double n2 = gIg.squaredNorm();
   if (n2 == 0.0) return std::numeric_limits<double>::quiet_NaN();
   return model.field.lambda_ + gamma.cross(linear_term(model)).dot(gIg) / n2;
 }
 
-RotationFamilies permanent_rotations(const Model& model, int samples) {
+RotationFamilies permanent_rotations(const QuadraticModel& model, int samples) {
   if (!model.body.gyrostat().isZero(0.0)) {
     throw InputError(
         "gyrostat: permanent rotations (spec §8) need a body without rotor, k = [0, 0, "

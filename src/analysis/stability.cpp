@@ -17,7 +17,7 @@ Mat3 cross_matrix(const Vec3& a) {
 
 /// Ω with ω = Ω γ at a fixed point (0 at rest).
 double spin_rate(const Model& model, const State& s) {
-  return omega(model.body, s).dot(s.gamma) / s.gamma.squaredNorm();
+  return omega(model.body(), s).dot(s.gamma) / s.gamma.squaredNorm();
 }
 
 // Newton steps of polish_fixed_point; quadratic convergence from 1e-3 needs about 5.
@@ -63,7 +63,7 @@ PolishedFixedPoint polish_fixed_point(const Model& model, const State& s) {
   PolishedFixedPoint out;
   out.state = s;
   out.residual_given = out.residual = fixed_point_residual(model, s);
-  const Vec3 w = omega(model.body, s);
+  const Vec3 w = omega(model.body(), s);
   const bool at_rest = w.isZero(0.0);
   const double m_scale = at_rest ? 1.0 : s.m.norm();
   // Row scales of the residual, fixed at the given state (as in fixed_point_residual).
@@ -86,12 +86,11 @@ PolishedFixedPoint polish_fixed_point(const Model& model, const State& s) {
 }
 
 Mat6 jacobian(const Model& model, const State& s) {
-  const Vec3 w = omega(model.body, s);
-  const Mat3 I_inv = model.body.inertia().cwiseInverse().asDiagonal();
-  const Mat3 H = hessian_gamma(model.body, model.field, s.gamma);
+  const Vec3 w = omega(model.body(), s);
+  const Mat3 I_inv = model.body().inertia().cwiseInverse().asDiagonal();
   Mat6 J;
   J.topLeftCorner<3, 3>() = cross_matrix(s.m) * I_inv - cross_matrix(w);
-  J.topRightCorner<3, 3>() = cross_matrix(s.gamma) * H - cross_matrix(grad_gamma(model, s.gamma));
+  J.topRightCorner<3, 3>() = moment_jacobian(model, s.gamma);
   J.bottomLeftCorner<3, 3>() = cross_matrix(s.gamma) * I_inv;
   J.bottomRightCorner<3, 3>() = -cross_matrix(w);
   return J;
@@ -111,7 +110,7 @@ Eigen::Matrix4d reduced_jacobian(const Model& model, const State& s) {
 
 double fixed_point_residual(const Model& model, const State& s) {
   const State f = rhs(model, s);
-  const Vec3 w = omega(model.body, s);
+  const Vec3 w = omega(model.body(), s);
   const double scale_m = s.m.norm() * w.norm() + grad_gamma(model, s.gamma).norm();
   const double scale_g = w.norm();
   const double rm = f.m.norm(), rg = f.gamma.norm();
@@ -124,11 +123,10 @@ Eigen::Matrix4d energy_casimir_hessian(const Model& model, const State& s) {
   const double mu = -spin_rate(model, s);
   const double nu = -s.gamma.dot(grad_gamma(model, s.gamma) + mu * s.m) / s.gamma.squaredNorm();
   Mat6 D2;
-  D2.topLeftCorner<3, 3>() = model.body.inertia().cwiseInverse().asDiagonal();
+  D2.topLeftCorner<3, 3>() = model.body().inertia().cwiseInverse().asDiagonal();
   D2.topRightCorner<3, 3>() = mu * Mat3::Identity();
   D2.bottomLeftCorner<3, 3>() = mu * Mat3::Identity();
-  D2.bottomRightCorner<3, 3>() =
-      hessian_gamma(model.body, model.field, s.gamma) + nu * Mat3::Identity();
+  D2.bottomRightCorner<3, 3>() = hessian_gamma(model, s.gamma) + nu * Mat3::Identity();
   const LeafBasis Q = leaf_basis(s);
   return Q.transpose() * D2 * Q;
 }

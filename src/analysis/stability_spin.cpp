@@ -12,7 +12,7 @@ void check_axis(int axis) {
   }
 }
 
-bool linearly_stable_at(const Model& model, int axis, double Omega) {
+bool linearly_stable_at(const QuadraticModel& model, int axis, double Omega) {
   return spin_stability(model, axis, Omega).linearly_stable;
 }
 
@@ -67,7 +67,8 @@ std::optional<double> beletsky_threshold(const Body& body, double lambda, int ax
   return std::sqrt(lambda) * (std::sqrt(a) + std::sqrt(b)) / (1 + std::sqrt(a * b));
 }
 
-Eigen::Matrix<double, 5, 1> axis_spin_polynomial(const Model& model, int axis, double Omega) {
+Eigen::Matrix<double, 5, 1> axis_spin_polynomial(const QuadraticModel& model, int axis,
+                                                 double Omega) {
   const Vec3 m = spin_frame_moments(model.body, axis);
   const double A = m.x(), B = m.y(), C = m.z();
   const double lambda = model.field.lambda_, w2 = Omega * Omega;
@@ -80,11 +81,11 @@ Eigen::Matrix<double, 5, 1> axis_spin_polynomial(const Model& model, int axis, d
   return p;
 }
 
-Spectrum spin_stability(const Model& model, int axis, double Omega) {
+Spectrum spin_stability(const QuadraticModel& model, int axis, double Omega) {
   return linear_stability(model, principal_spin(model.body, axis, Omega));
 }
 
-double spin_omega_range(const Model& model) {
+double spin_omega_range(const QuadraticModel& model) {
   const Vec3& I = model.body.inertia();
   const double b = model.body.mass() * std::abs(model.field.g) * model.body.center_of_mass().norm();
   const double range = 8 * (std::sqrt(std::abs(model.field.lambda_) * I.maxCoeff() / I.minCoeff()) +
@@ -92,7 +93,7 @@ double spin_omega_range(const Model& model) {
   return range > 0 ? range : 1.0;
 }
 
-std::optional<double> numeric_threshold(const Model& model, int axis, int samples) {
+std::optional<double> numeric_threshold(const QuadraticModel& model, int axis, int samples) {
   const double top = spin_omega_range(model);
   if (!linearly_stable_at(model, axis, top)) return std::nullopt;
   // Last sample that is unstable; above it the samples are stable.
@@ -113,7 +114,8 @@ std::optional<double> numeric_threshold(const Model& model, int axis, int sample
   return hi;
 }
 
-std::vector<ScanPoint> scan_omega(const Model& model, int axis, double w1, double w2, int n) {
+std::vector<ScanPoint> scan_omega(const QuadraticModel& model, int axis, double w1, double w2,
+                                  int n) {
   if (n < 1 || n > kMaxScanPoints) {
     throw InputError("scan: expected 1 to " + std::to_string(kMaxScanPoints) + " points, found " +
                      std::to_string(n));

@@ -70,17 +70,18 @@ FieldSection quadratic_form(TableReader& r, const std::string& kind) {
   return f;
 }
 
-FieldSection exact_form(TableReader& r, const std::string& kind, ExactSettings& exact) {
+FieldSection exact_form(TableReader& r, const std::string& kind,
+                        const std::shared_ptr<const MassModel>& mass_model, CentreSection& exact) {
   exact.kind = kind == "exact" ? FieldKind::exact : FieldKind::multipole;
   exact.mu = r.number("mu");
   exact.R = r.number("R");
   if (exact.kind == FieldKind::multipole) {
     exact.order = static_cast<int>(r.integer("order", 1, kMaxOrder));
   }
-  if (!exact.mass_model) r.fail("kind", "kind = \"" + kind + "\" needs a [mass_model] section");
+  if (!mass_model) r.fail("kind", "kind = \"" + kind + "\" needs a [mass_model] section");
   FieldSection f;
   f.field = r.checked([&] { return QuadraticField::from_mu_R(exact.mu, exact.R); });
-  r.checked([&] { return ExactField::make(exact.mass_model, exact.mu, exact.R); });
+  r.checked([&] { return ExactField::make(mass_model, exact.mu, exact.R); });
   f.g = {factor("mu", exact.mu), factor("R", exact.R, -2)};
   f.lambda = {factor("mu", exact.mu), factor("R", exact.R, -3)};
   return f;
@@ -94,7 +95,8 @@ const std::vector<std::string>& field_keys() {
   return keys;
 }
 
-FieldSection read_field(TableReader& r, ExactSettings& exact) {
+FieldSection read_field(TableReader& r, const std::shared_ptr<const MassModel>& mass_model,
+                        CentreSection& exact) {
   const std::optional<std::string> given = r.optional_string("kind");
   const std::vector<std::string> kinds{"newtonian", "coulomb", "uniform",
                                        "brun",      "exact",   "multipole"};
@@ -120,7 +122,7 @@ FieldSection read_field(TableReader& r, ExactSettings& exact) {
     r.only(kind == "exact" ? std::vector<std::string>{"kind", "mu", "R"}
                            : std::vector<std::string>{"kind", "mu", "R", "order"},
            field_keys(), reason);
-    f = exact_form(r, kind, exact);
+    f = exact_form(r, kind, mass_model, exact);
   } else if (kind == "brun") {
     r.only({"kind", "N", "plane_offset"}, field_keys(), reason);
     const double N = r.number("N");

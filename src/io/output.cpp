@@ -91,8 +91,10 @@ void AtomicFile::commit() {
   delist(tmp_.c_str());  // after the rename: a signal in between finds no file to remove
 }
 
-CsvTrajectory::CsvTrajectory(std::ostream& out, const Model& model)
-    : out_(out), model_(model), brun_(brun_holds(model)), lagrange_(lagrange_holds(model)) {
+CsvTrajectory::CsvTrajectory(std::ostream& out, const Model& model) : out_(out), model_(model) {
+  const IntegralValues v = integrals(model, State{});
+  brun_ = v.brun.has_value();
+  lagrange_ = v.lagrange.has_value();
   out_ << "t,p,q,r,gamma1,gamma2,gamma3,energy,area,geometric";
   if (brun_) out_ << ",brun";
   if (lagrange_) out_ << ",lagrange";
@@ -100,7 +102,8 @@ CsvTrajectory::CsvTrajectory(std::ostream& out, const Model& model)
 }
 
 void CsvTrajectory::write(double t, const State& s) {
-  const Vec3 w = omega(model_.body, s);
+  const Vec3 w = omega(model_.body(), s);
+  const IntegralValues v = integrals(model_, s);
   line_.clear();
   auto add = [&](double x) {
     if (!line_.empty()) line_ += ',';
@@ -109,11 +112,11 @@ void CsvTrajectory::write(double t, const State& s) {
   add(t);
   for (int i = 0; i < 3; ++i) add(w[i]);
   for (int i = 0; i < 3; ++i) add(s.gamma[i]);
-  add(energy(model_, s));
-  add(area(s));
-  add(geometric(s));
-  if (brun_) add(brun(model_, s));
-  if (lagrange_) add(lagrange(model_, s));
+  add(v.energy);
+  add(v.area);
+  add(v.geometric);
+  if (brun_) add(*v.brun);
+  if (lagrange_) add(*v.lagrange);
   line_ += '\n';
   out_ << line_;
 }

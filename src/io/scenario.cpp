@@ -100,6 +100,23 @@ Body body_of_model(const MassModelSection& mm, const toml::table& section, const
   }
 }
 
+/// The model of the run. With a mass model, the factories derive the body from it again (the same
+/// body_of as body_value, already checked): the rotor is the one thing [body] adds.
+Model run_model(const MassModelSection& mm, const Body& body_value, const FieldSection& field,
+                const CentreSection& c) {
+  if (!mm.model) return Model(body_value, field.field);
+  const Vec3& k = body_value.gyrostat();
+  switch (c.kind) {
+    case FieldKind::exact:
+      return Model::exact(mm.model, c.mu, c.R, k);
+    case FieldKind::multipole:
+      return Model::multipole(mm.model, c.order, c.mu, c.R, k);
+    case FieldKind::quadratic:
+      break;
+  }
+  return Model::quadratic(mm.model, field.field, k);
+}
+
 /// [body], [mass_model] or both (then they must agree; [body] may then hold only a gyrostat).
 Body read_body_or_mass_model(const toml::table* t, const toml::table* mm_table,
                              const MassModelSection& mm, const std::string& source) {
@@ -180,26 +197,25 @@ Scenario parse_scenario(const std::string& text, const std::string& source) {
     if (!t && required) top.fail(name, "missing section [" + name + "]");
     return t;
   };
-  ExactSettings exact;
   MassModelSection mm;
   std::vector<std::string> input_files{source};
   const toml::table* mm_table = section("mass_model", false);
   if (mm_table) {
     TableReader r(*mm_table, source, "mass_model");
     mm = read_mass_model(r, std::filesystem::path(source).parent_path().string());
-    exact.mass_model = mm.model;
     input_files.insert(input_files.end(), mm.files.begin(), mm.files.end());
   }
   const toml::table* body_table = section("body", !mm.model);
   const Body body_value = read_body_or_mass_model(body_table, mm_table, mm, source);
   TableReader field_reader(*section("field", true), source, "field");
-  const FieldSection field = read_field(field_reader, exact);
-  const Model model{body_value, field.field};
+  CentreSection centre;
+  const FieldSection field = read_field(field_reader, mm.model, centre);
+  const QuadraticModel checked{body_value, field.field};
   TableReader initial(*section("initial", true), source, "initial");
-  const State x0 = read_initial(initial, model.body);
-  check_magnitudes(model, x0, field, body_source(body_table, mm_table ? &mm : nullptr), doc,
+  const State x0 = read_initial(initial, checked.body);
+  check_magnitudes(checked, x0, field, body_source(body_table, mm_table ? &mm : nullptr), doc,
                    source);
-  Scenario s{source, model, x0, {}, {}, exact, input_files};
+  Scenario s{source, run_model(mm, body_value, field, centre), x0, {}, {}, input_files};
   if (const toml::table* t = section("integrate", false)) {
     TableReader r(*t, source, "integrate");
     s.integrate = read_integrate(r);

@@ -62,7 +62,7 @@ class Checker {
 
 }  // namespace
 
-void check_magnitudes(const Model& model, const State& x0, const FieldSection& field,
+void check_magnitudes(const QuadraticModel& model, const State& x0, const FieldSection& field,
                       const BodySource& body, const toml::table& doc, const std::string& source) {
   const Checker check(doc, source);
   const Body& b = model.body;

@@ -1,6 +1,7 @@
 #pragma once
 // Internal: the sections of a scenario file (docs/scenario.md) and the checks that span them.
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,9 +29,18 @@ struct FieldSection {
 /// Every key [field] can hold.
 const std::vector<std::string>& field_keys();
 
-/// Reads [field] (kind optional where the keys say which field it is); fills the exact-field part
-/// of `exact` for kind = "exact" | "multipole".
-FieldSection read_field(TableReader& r, ExactSettings& exact);
+/// The centre of kind = "exact" | "multipole" as [field] gives it.
+struct CentreSection {
+  FieldKind kind = FieldKind::quadratic;
+  double mu = 0.0, R = 0.0;
+  int order = 0;
+};
+
+/// Reads [field] (kind optional where the keys say which field it is); fills `centre` for
+/// kind = "exact" | "multipole", which need a mass model (`mass_model`, null without one).
+/// `field` is then the quadratic field of the same μ and R (for the magnitude checks).
+FieldSection read_field(TableReader& r, const std::shared_ptr<const MassModel>& mass_model,
+                        CentreSection& centre);
 
 /// Where the body's quantities come from: [body] keys, or the [mass_model] key that made them.
 struct BodySource {
@@ -45,7 +55,7 @@ inline constexpr double kMaxMagnitude = 1e300;
 /// integrals, the moment and their bounds over the whole motion (from the conservation of
 /// energy: ½ω·Iω ≤ T0 + 2 max|V|) stay below kMaxMagnitude; otherwise throws InputError naming the
 /// key whose value drives the overflow, with the quantity and its inputs.
-void check_magnitudes(const Model& model, const State& x0, const FieldSection& field,
+void check_magnitudes(const QuadraticModel& model, const State& x0, const FieldSection& field,
                       const BodySource& body, const toml::table& doc, const std::string& source);
 
 }  // namespace newtop::io

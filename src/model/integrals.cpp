@@ -15,23 +15,23 @@ double gyration_radius(const Body& b) {
 
 }  // namespace
 
-double brun(const Model& model, const State& s) {
+double brun(const QuadraticModel& model, const State& s) {
   const Vec3& I = model.body.inertia();
   const Vec3 Iw = s.m - model.body.gyrostat();  // I ω
   const double ABC = I.prod();
   return Iw.squaredNorm() - model.field.lambda_ * ABC * s.gamma.dot(s.gamma.cwiseQuotient(I));
 }
 
-double lagrange(const Model& /*model*/, const State& s) { return s.m.z(); }
+double lagrange(const QuadraticModel& /*model*/, const State& s) { return s.m.z(); }
 
-bool brun_holds(const Model& model) {
+bool brun_holds(const QuadraticModel& model) {
   const Body& b = model.body;
   const bool no_linear = model.field.g == 0.0 || b.mass() == 0.0 ||
                          negligible(b.center_of_mass().norm(), gyration_radius(b));
   return no_linear && b.gyrostat().isZero(0.0);
 }
 
-bool lagrange_holds(const Model& model) {
+bool lagrange_holds(const QuadraticModel& model) {
   const Body& b = model.body;
   const double length = gyration_radius(b);
   const bool symmetric = negligible(b.A() - b.B(), b.A());
@@ -42,18 +42,31 @@ bool lagrange_holds(const Model& model) {
   return symmetric && on_axis && rotor_on_axis;
 }
 
-std::vector<std::string> conserved_integrals(const Model& model) {
+std::vector<std::string> conserved_integrals(const QuadraticModel& model) {
   std::vector<std::string> names{"energy", "area", "geometric"};
   if (brun_holds(model)) names.emplace_back("brun");
   if (lagrange_holds(model)) names.emplace_back("lagrange");
   return names;
 }
 
-IntegralValues integrals(const Model& model, const State& s) {
+IntegralValues integrals(const QuadraticModel& model, const State& s) {
   IntegralValues v{energy(model, s), area(s), geometric(s), std::nullopt, std::nullopt};
   if (brun_holds(model)) v.brun = brun(model, s);
   if (lagrange_holds(model)) v.lagrange = lagrange(model, s);
   return v;
+}
+
+double energy(const Model& model, const State& s) {
+  return visit_model(model, [&](const auto& m) { return energy(m, s); });
+}
+
+IntegralValues integrals(const Model& model, const State& s) {
+  return visit_model(model, [&](const auto& m) { return integrals(m, s); });
+}
+
+std::vector<std::string> conserved_integrals(const Model& model) {
+  if (model.kind() == FieldKind::quadratic) return conserved_integrals(model.quadratic());
+  return {"energy", "area", "geometric"};
 }
 
 }  // namespace newtop

@@ -22,8 +22,8 @@ bool check(bool ok, const char* what) {
 
 /// newtop::newtop: a heavy top integrated by splitting4 conserves energy.
 bool integrate_heavy_top() {
-  const Model model{Body::from_principal(Vec3(2, 2, 1), 1.0, Vec3(0, 0, 0.5)),
-                    QuadraticField::uniform(9.81)};
+  const QuadraticModel model{Body::from_principal(Vec3(2, 2, 1), 1.0, Vec3(0, 0, 0.5)),
+                             QuadraticField::uniform(9.81)};
   const State x0 = state_from_omega(model.body, Vec3(0.3, 0, 20), Vec3(0.6, 0, 0.8));
   SplittingStepper stepper(composition_table("splitting4"));
   const Outcome out = integrate(stepper, model, x0, 0.0, 10.0, IntegrateOptions{.step = 1e-3});
@@ -35,7 +35,8 @@ bool integrate_heavy_top() {
 /// newtop::newtop (Boost.Math elliptic functions): the Euler–Poinsot solution keeps |m| and the
 /// energy of the free body and moves m.
 bool euler_poinsot_solution() {
-  const Model model{Body::from_principal(Vec3(1, 2, 3), 1.0, Vec3::Zero()), QuadraticField{}};
+  const QuadraticModel model{Body::from_principal(Vec3(1, 2, 3), 1.0, Vec3::Zero()),
+                             QuadraticField{}};
   const State x0 = state_from_omega(model.body, Vec3(0.3, 0.4, 1.1), Vec3(0, 0.6, 0.8));
   const State x = analytic_state(analytic_solution(model, x0, AnalyticKind::euler_poinsot), 2.0);
   // Elliptic functions to a few ulps: 1e-12 relative leaves a wide margin.
@@ -49,7 +50,7 @@ bool parse_scenario_text() {
       "[body]\ninertia = [1.0, 1.5, 2.2]\nmass = 1.0\n[field]\ng = 1.0\nlambda = 1.0\n"
       "[initial]\nomega = [0.0, 0.0, 1.2]\ngamma = [0.0, 0.0, 1.0]\n",
       "consumer.toml");
-  return sc.model.body.C() == 2.2 && sc.model.field.lambda_ == 1.0;
+  return sc.model.body().C() == 2.2 && sc.model.quadratic().field.lambda_ == 1.0;
 }
 
 /// newtop::io (nlohmann-json): a vector as JSON.

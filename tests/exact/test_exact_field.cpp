@@ -140,7 +140,7 @@ TEST(ExactField, SplittingConservesCasimirsAndAgreesWithRkf78) {
   const double e0 = energy(model, x0);
   EXPECT_NEAR(energy(model, a.state), e0, tol * std::abs(e0));
   // The motion differs from the quadratic model's: the exact field matters here.
-  const Model quad{model.body, QuadraticField::from_mu_R(40.0, 5.0)};
+  const QuadraticModel quad{model.body, QuadraticField::from_mu_R(40.0, 5.0)};
   Fehlberg78Stepper rq(1e-13, 1e-13);
   const Outcome c = integrate(rq, quad, x0, 0.0, T, IntegrateOptions{});
   EXPECT_GT((c.state.gamma - b.state.gamma).norm(), 100 * tol);

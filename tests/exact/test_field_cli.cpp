@@ -187,8 +187,8 @@ TEST(FieldCli, BadInputIsOneLineWithExitCode2) {
 TEST(ScenarioMassModel, BodyMustAgreeWithMassModel) {
   const std::string good = kBox + "\n[body]\ngyrostat = [0.0, 0.0, 0.5]\n";
   const io::Scenario s = io::parse_scenario(good, "good.toml");
-  EXPECT_EQ(s.exact.kind, io::FieldKind::exact);
-  EXPECT_NEAR(s.model.body.mass(), 12.0, 1e-12);
+  EXPECT_EQ(s.model.kind(), FieldKind::exact);
+  EXPECT_NEAR(s.model.body().mass(), 12.0, 1e-12);
   const std::string bad = kBox + "\n[body]\ninertia = [1.0, 2.0, 2.5]\nmass = 12.0\n";
   try {
     io::parse_scenario(bad, "bad.toml");

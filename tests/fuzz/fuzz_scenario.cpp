@@ -16,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const newtop::State d = newtop::rhs(s.model, s.initial);
     const bool finite = std::isfinite(v.energy) && std::isfinite(v.area) &&
                         std::isfinite(v.brun.value_or(0.0)) && d.m.allFinite() &&
-                        d.gamma.allFinite() && newtop::omega(s.model.body, s.initial).allFinite();
+                        d.gamma.allFinite() && newtop::omega(s.model.body(), s.initial).allFinite();
     if (!finite) std::abort();
   });
   return 0;

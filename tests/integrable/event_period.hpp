@@ -10,7 +10,8 @@
 
 namespace newtop::test {
 
-inline std::vector<double> upward_crossings(const Model& model, const State& x0, double t_end,
+inline std::vector<double> upward_crossings(const QuadraticModel& model, const State& x0,
+                                            double t_end,
                                             const std::function<double(const State&)>& f,
                                             double tol = 1e-13) {
   Dopri5Dense<QuadraticField> dense(model, tol, tol);

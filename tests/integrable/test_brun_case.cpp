@@ -39,7 +39,7 @@ struct Regime {
   Vec3 m, gamma;  // m is projected on the plane normal to γ (the level f = 0)
 };
 
-Model model_of(const Regime& r) {
+QuadraticModel model_of(const Regime& r) {
   return {Body::from_principal(r.inertia, 1.0, Vec3::Zero()),
           QuadraticField::coulomb(0.0, r.lambda)};
 }
@@ -56,7 +56,7 @@ struct Track {
   std::vector<State> x;
 };
 
-Track track(const Model& model, const BrunCase& b, const State& x0, double t_end, int n) {
+Track track(const QuadraticModel& model, const BrunCase& b, const State& x0, double t_end, int n) {
   Track tr;
   State x = x0;
   std::array<double, 2> prev = b.initial.phi;
@@ -103,7 +103,7 @@ class BrunRegimes : public ::testing::TestWithParam<Regime> {};
 
 TEST_P(BrunRegimes, AbelSumsStatesAndFrequenciesMatchTheNumericalMotion) {
   const Regime& r = GetParam();
-  const Model model = model_of(r);
+  const QuadraticModel model = model_of(r);
   const State x0 = state_of(r);
   const BrunCase b = brun_case(model, x0);
   ASSERT_GT(b.frequency[0], 0.0);
@@ -160,10 +160,11 @@ TEST(BrunCase, ReproducesEulerPoinsotAsLambdaVanishes) {
   const Vec3 g = Vec3(0.0, 0.6, 0.8);
   const Vec3 m0 = I.cwiseProduct(Vec3(0.3, 0.4, 1.1));
   const State x0{m0 - m0.dot(g) * g, g};
-  const Model free{Body::from_principal(I, 1.0, Vec3::Zero()), QuadraticField::coulomb(0, 0)};
+  const QuadraticModel free{Body::from_principal(I, 1.0, Vec3::Zero()),
+                            QuadraticField::coulomb(0, 0)};
   const EulerPoinsot ep = euler_poinsot(free.body, x0);
   auto distance = [&](double lambda) {
-    const Model model{free.body, QuadraticField::coulomb(0.0, lambda)};
+    const QuadraticModel model{free.body, QuadraticField::coulomb(0.0, lambda)};
     const BrunCase b = brun_case(model, x0);
     double d = 0;
     for (int i = 1; i <= 10; ++i) {

@@ -26,7 +26,7 @@ constexpr double kFiniteDifference = 1e-6;
 constexpr double kStep = 1e-5;
 
 struct RandomLevel {
-  Model model;
+  QuadraticModel model;
   State x0;
 };
 
@@ -39,8 +39,8 @@ RandomLevel random_level(std::mt19937_64& rng) {
   Vec3 g(U(rng), U(rng), U(rng));
   g.normalize();
   const Vec3 m(U(rng), U(rng), U(rng));
-  return {Model{Body::from_principal(Vec3(A, B, C), 1.0, Vec3::Zero()),
-                QuadraticField::coulomb(0.0, lambda == 0.0 ? 0.5 : lambda)},
+  return {QuadraticModel{Body::from_principal(Vec3(A, B, C), 1.0, Vec3::Zero()),
+                         QuadraticField::coulomb(0.0, lambda == 0.0 ? 0.5 : lambda)},
           State{m, g}};
 }
 
@@ -107,8 +107,8 @@ TEST(BrunLevel, CoupledRelationsHoldWithTheCouplingK) {
     }
   }
   // On f = 0 the coupling vanishes and the relations are w_s² = R(u_s).
-  const Model model{Body::from_principal(Vec3(1, 1.5, 2.2), 1.0, Vec3::Zero()),
-                    QuadraticField::brun(0.8)};
+  const QuadraticModel model{Body::from_principal(Vec3(1, 1.5, 2.2), 1.0, Vec3::Zero()),
+                             QuadraticField::brun(0.8)};
   const Vec3 g = Vec3(0.48, -0.6, 0.64).normalized();
   Vec3 m(0.5, 1.65, -0.88);
   m -= m.dot(g) * g;
@@ -187,8 +187,8 @@ TEST(BrunLevel, SpectralCurveBranchPointsAreTheRootsOfD) {
 
 TEST(BrunLevel, SmallAreaSplitsEachRootOfNAsPredicted) {
   // D = N² − 4λf²P: near a simple root ν of N, |u − ν| = 2|f| √|λ P(ν)| / |N′(ν)| + O(f²).
-  const Model model{Body::from_principal(Vec3(1, 1.5, 2.2), 1.0, Vec3::Zero()),
-                    QuadraticField::brun(0.8)};
+  const QuadraticModel model{Body::from_principal(Vec3(1, 1.5, 2.2), 1.0, Vec3::Zero()),
+                             QuadraticField::brun(0.8)};
   const Vec3 g = Vec3(0.48, -0.6, 0.64).normalized();
   Vec3 m0(0.5, 1.65, -0.88);
   m0 -= m0.dot(g) * g;

@@ -35,7 +35,7 @@ double round_trip_bound(const BrunCurve& k, const State& x) {
 constexpr double kCurveRelation = 64 * kEps;
 
 struct RandomLevel {
-  Model model;
+  QuadraticModel model;
   State x0;
 };
 
@@ -50,8 +50,8 @@ RandomLevel random_level(std::mt19937_64& rng) {
   g.normalize();
   Vec3 m(U(rng), U(rng), U(rng));
   m -= m.dot(g) * g;  // the level f = 0
-  return {Model{Body::from_principal(Vec3(A, B, C), 1.0, Vec3::Zero()),
-                QuadraticField::coulomb(0.0, lambda == 0.0 ? 0.5 : lambda)},
+  return {QuadraticModel{Body::from_principal(Vec3(A, B, C), 1.0, Vec3::Zero()),
+                         QuadraticField::coulomb(0.0, lambda == 0.0 ? 0.5 : lambda)},
           State{m, g}};
 }
 
@@ -106,15 +106,15 @@ TEST(BrunSeparation, PointsLieOnTheCurveAndNMatchesItsDefinition) {
 }
 
 TEST(BrunSeparation, RejectsNonzeroAreaEqualMomentsAndOtherCases) {
-  const Model model{Body::from_principal(Vec3(1, 1.5, 2.2), 1.0, Vec3::Zero()),
-                    QuadraticField::brun(0.8)};
+  const QuadraticModel model{Body::from_principal(Vec3(1, 1.5, 2.2), 1.0, Vec3::Zero()),
+                             QuadraticField::brun(0.8)};
   const State off_level{Vec3(0.5, 1.65, -0.88), Vec3(0.48, -0.6, 0.64)};
   EXPECT_THROW(brun_curve(model, off_level), InputError);
-  const Model equal{Body::from_principal(Vec3(1, 2, 2), 1.0, Vec3::Zero()),
-                    QuadraticField::brun(0.8)};
+  const QuadraticModel equal{Body::from_principal(Vec3(1, 2, 2), 1.0, Vec3::Zero()),
+                             QuadraticField::brun(0.8)};
   EXPECT_THROW(brun_curve(equal, State{Vec3(0, 0.8, -0.6), Vec3(0, 0.6, 0.8)}), InputError);
-  const Model heavy{Body::from_principal(Vec3(1, 1.5, 2.2), 1.0, Vec3(0, 0, 0.1)),
-                    QuadraticField::coulomb(1.0, 0.8)};
+  const QuadraticModel heavy{Body::from_principal(Vec3(1, 1.5, 2.2), 1.0, Vec3(0, 0, 0.1)),
+                             QuadraticField::coulomb(1.0, 0.8)};
   EXPECT_THROW(brun_curve(heavy, State{Vec3(0, 0.8, -0.6), Vec3(0, 0.6, 0.8)}), InputError);
 }
 

@@ -21,16 +21,16 @@ namespace {
 constexpr double kAgreement = 1e-10;
 constexpr double kReferenceTol = 1e-14;
 
-State reference(const Model& model, const State& x0, double t) {
+State reference(const QuadraticModel& model, const State& x0, double t) {
   Fehlberg78Stepper s(kReferenceTol, kReferenceTol);
   return integrate(s, model, x0, 0.0, t, {}).state;
 }
 
-Model free_model(const Vec3& I) {
-  return Model{Body::from_principal(I, 1.0, Vec3::Zero()), QuadraticField{}};
+QuadraticModel free_model(const Vec3& I) {
+  return QuadraticModel{Body::from_principal(I, 1.0, Vec3::Zero()), QuadraticField{}};
 }
 
-double max_error(const Model& model, const State& x0, double t_end, int samples) {
+double max_error(const QuadraticModel& model, const State& x0, double t_end, int samples) {
   const EulerPoinsot sol = euler_poinsot(model.body, x0);
   double err = 0.0;
   State x = x0;
@@ -58,7 +58,7 @@ class EulerPoinsotCases : public ::testing::TestWithParam<Case> {};
 
 TEST_P(EulerPoinsotCases, MatchesNumericalMotionOverSeveralPeriods) {
   const Case& c = GetParam();
-  const Model model = free_model(c.inertia);
+  const QuadraticModel model = free_model(c.inertia);
   const State x0 = state_from_omega(model.body, c.omega, c.gamma.normalized());
   const EulerPoinsot sol = euler_poinsot(model.body, x0);
   const double t_end = std::isfinite(sol.period) ? 3.3 * sol.period : 20.0;
@@ -80,7 +80,7 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
 TEST(EulerPoinsot, PeriodIsThePeriodOfTheAngularMomentum) {
-  const Model model = free_model({1.0, 2.0, 3.0});
+  const QuadraticModel model = free_model({1.0, 2.0, 3.0});
   const State x0 = state_from_omega(model.body, {0.3, 0.4, 1.1}, {0.0, 0.0, 1.0});
   const EulerPoinsot sol = euler_poinsot(model.body, x0);
   ASSERT_TRUE(std::isfinite(sol.period));

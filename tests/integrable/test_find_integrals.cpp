@@ -27,8 +27,8 @@ bool has(const IntegralSearch& s, const std::string& name) {
 }
 
 TEST(FindIntegrals, GenericBodyHasOnlyTheClassicalThree) {
-  const Model m{Body::from_principal({1.0, 1.7, 2.3}, 1.0, {0.2, -0.1, 0.3}),
-                QuadraticField::coulomb(1.3, 0.8)};
+  const QuadraticModel m{Body::from_principal({1.0, 1.7, 2.3}, 1.0, {0.2, -0.1, 0.3}),
+                         QuadraticField::coulomb(1.3, 0.8)};
   const IntegralSearch s = find_integrals(m);
   EXPECT_EQ(s.integrals.size(), 3u);
   EXPECT_EQ(named_count(s), 3);
@@ -37,16 +37,16 @@ TEST(FindIntegrals, GenericBodyHasOnlyTheClassicalThree) {
 }
 
 TEST(FindIntegrals, BrunCaseHasAFourthQuadraticIntegral) {
-  const Model m{Body::from_principal({1.0, 1.7, 2.3}, 1.0, Vec3::Zero()),
-                QuadraticField::coulomb(0.0, 0.8)};
+  const QuadraticModel m{Body::from_principal({1.0, 1.7, 2.3}, 1.0, Vec3::Zero()),
+                         QuadraticField::coulomb(0.0, 0.8)};
   const IntegralSearch s = find_integrals(m);
   EXPECT_EQ(s.integrals.size(), 4u);
   EXPECT_TRUE(has(s, "brun"));
 }
 
 TEST(FindIntegrals, LagrangeCaseFindsRAndItsSquare) {
-  const Model m{Body::from_principal({2.0, 2.0, 1.0}, 1.0, {0.0, 0.0, 0.5}),
-                QuadraticField::coulomb(2.0, 0.7)};
+  const QuadraticModel m{Body::from_principal({2.0, 2.0, 1.0}, 1.0, {0.0, 0.0, 0.5}),
+                         QuadraticField::coulomb(2.0, 0.7)};
   const IntegralSearch s = find_integrals(m);
   EXPECT_EQ(s.integrals.size(), 5u);
   EXPECT_TRUE(has(s, "lagrange") && has(s, "lagrange*lagrange"));
@@ -54,8 +54,8 @@ TEST(FindIntegrals, LagrangeCaseFindsRAndItsSquare) {
 }
 
 TEST(FindIntegrals, UniformGravityHeavyBodyHasNothingNew) {
-  const Model m{Body::from_principal({1.0, 1.7, 2.3}, 1.0, {0.2, 0.4, -0.3}),
-                QuadraticField::uniform(9.81)};
+  const QuadraticModel m{Body::from_principal({1.0, 1.7, 2.3}, 1.0, {0.2, 0.4, -0.3}),
+                         QuadraticField::uniform(9.81)};
   EXPECT_EQ(find_integrals(m).integrals.size(), 3u);
   // At degree 3 only products appear, none of them cubic: still the same three.
   EXPECT_EQ(find_integrals(m, {.degree = 3}).integrals.size(), 3u);
@@ -64,8 +64,8 @@ TEST(FindIntegrals, UniformGravityHeavyBodyHasNothingNew) {
 TEST(FindIntegrals, KovalevskayaQuarticIntegralAppearsAtDegreeFour) {
   // λ = 0, A = B = 2C, centre of mass in the equatorial plane (x0 ≠ 0).
   const double C = 1.0, Mg_x0 = 1.5;
-  const Model m{Body::from_principal({2 * C, 2 * C, C}, 1.0, {Mg_x0, 0.0, 0.0}),
-                QuadraticField::uniform(1.0)};
+  const QuadraticModel m{Body::from_principal({2 * C, 2 * C, C}, 1.0, {Mg_x0, 0.0, 0.0}),
+                         QuadraticField::uniform(1.0)};
   const IntegralSearch s = find_integrals(m, {.degree = 4});
   // Products of energy, area and geometric up to degree 4 give 9; one more is new.
   EXPECT_EQ(named_count(s), 9);
@@ -112,7 +112,8 @@ TEST(FindIntegrals, QuadraticIntegralOnlyForTheNewtonianQuadraticPotential) {
 }
 
 TEST(FindIntegrals, RejectsBadDegree) {
-  const Model m{Body::from_principal({1.0, 1.7, 2.3}, 1.0, Vec3::Zero()), QuadraticField{}};
+  const QuadraticModel m{Body::from_principal({1.0, 1.7, 2.3}, 1.0, Vec3::Zero()),
+                         QuadraticField{}};
   EXPECT_THROW(find_integrals(m, {.degree = 0}), InputError);
   EXPECT_THROW(find_integrals(m, {.degree = 9}), InputError);
 }

@@ -19,7 +19,7 @@
 namespace newtop {
 namespace {
 
-static_assert(FixedStepper<FreeBodySplittingStepper, Model>);
+static_assert(FixedStepper<FreeBodySplittingStepper, QuadraticModel>);
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 // Observed order from errors at h, h/2, h/4 within ±0.2 of the nominal order (architecture.md).
@@ -31,24 +31,24 @@ constexpr double kCasimirFactor = 64.0;
 // errors measured (≥ 1e-9 at the steps used).
 constexpr double kReferenceTol = 1e-14;
 
-Model brun_model() {
-  return Model{Body::from_principal({1.0, 1.6, 2.1}, 1.0, Vec3::Zero()),
-               QuadraticField::coulomb(0.0, 2.0)};
+QuadraticModel brun_model() {
+  return QuadraticModel{Body::from_principal({1.0, 1.6, 2.1}, 1.0, Vec3::Zero()),
+                        QuadraticField::coulomb(0.0, 2.0)};
 }
-Model general_model() {
-  return Model{Body::from_principal({1.0, 1.6, 2.1}, 1.0, {0.1, -0.2, 0.3}),
-               QuadraticField::coulomb(1.0, 1.5)};
+QuadraticModel general_model() {
+  return QuadraticModel{Body::from_principal({1.0, 1.6, 2.1}, 1.0, {0.1, -0.2, 0.3}),
+                        QuadraticField::coulomb(1.0, 1.5)};
 }
-State start(const Model& m) {
+State start(const QuadraticModel& m) {
   return state_from_omega(m.body, {0.4, -0.7, 1.2}, Vec3(0.3, 0.5, 0.8).normalized());
 }
 
-State reference(const Model& model, const State& x0, double t) {
+State reference(const QuadraticModel& model, const State& x0, double t) {
   Fehlberg78Stepper s(kReferenceTol, kReferenceTol);
   return integrate(s, model, x0, 0.0, t, {}).state;
 }
 
-double error_at(const char* table, const Model& model, double h, double t) {
+double error_at(const char* table, const QuadraticModel& model, double h, double t) {
   FreeBodySplittingStepper s(composition_table(table));
   const State x = integrate(s, model, start(model), 0.0, t, {.step = h}).state;
   const State r = reference(model, start(model), t);
@@ -57,7 +57,8 @@ double error_at(const char* table, const Model& model, double h, double t) {
 
 TEST(FreeBodyFlow, ExactForTheFreeBodyWithOneLargeStep) {
   // A free body: the splitting is the exact flow, whatever the step.
-  const Model model{Body::from_principal({1.0, 1.6, 2.1}, 1.0, Vec3::Zero()), QuadraticField{}};
+  const QuadraticModel model{Body::from_principal({1.0, 1.6, 2.1}, 1.0, Vec3::Zero()),
+                             QuadraticField{}};
   const State x0 = start(model);
   const double t = 7.3;
   FreeBodySplittingStepper s(composition_table("splitting2"));
@@ -79,7 +80,7 @@ class FreeBodyOrder : public ::testing::TestWithParam<OrderCase> {};
 
 TEST_P(FreeBodyOrder, ObservedOrderMatchesNominal) {
   const auto [table, order, h] = GetParam();
-  const Model model = general_model();
+  const QuadraticModel model = general_model();
   const double t = 2.0;
   const double e1 = error_at(table, model, h, t), e2 = error_at(table, model, h / 2, t),
                e4 = error_at(table, model, h / 4, t);
@@ -94,7 +95,7 @@ INSTANTIATE_TEST_SUITE_P(Tables, FreeBodyOrder,
                                            OrderCase{"splitting4", 4, 0.2}));
 
 TEST(FreeBodyFlow, PreservesCasimirs) {
-  const Model model = brun_model();
+  const QuadraticModel model = brun_model();
   const State x0 = start(model);
   FreeBodySplittingStepper s(composition_table("splitting4"));
   const int n = 2000;
@@ -111,7 +112,7 @@ constexpr int kDriftSteps = 50000;
 constexpr double kDriftStep = 0.05;
 
 TEST(FreeBodyFlow, EnergyErrorBoundedWithoutDrift) {
-  const Model model = brun_model();
+  const QuadraticModel model = brun_model();
   const test::EnergyErrorProfile p =
       test::energy_error_profile(FreeBodySplittingStepper(composition_table("splitting4")), model,
                                  start(model), kDriftStep, kDriftSteps);
@@ -122,14 +123,14 @@ TEST(FreeBodyFlow, EnergyErrorBoundedWithoutDrift) {
 // The same measure on the same problem must see the drift of a non-symplectic method, or it
 // proves nothing.
 TEST(FreeBodyFlow, DriftMeasureDetectsRk4Drift) {
-  const Model model = brun_model();
+  const QuadraticModel model = brun_model();
   const test::EnergyErrorProfile p =
       test::energy_error_profile(Rk4Stepper(), model, start(model), kDriftStep, kDriftSteps);
   EXPECT_FALSE(test::without_drift(p)) << "first tenth " << p.first << ", last tenth " << p.last;
 }
 
 TEST(FreeBodyFlow, StepForwardThenBackReturnsToStart) {
-  const Model model = general_model();
+  const QuadraticModel model = general_model();
   const State x0 = start(model);
   FreeBodySplittingStepper s(composition_table("splitting4"));
   State x = x0;

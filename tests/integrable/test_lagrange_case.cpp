@@ -29,16 +29,16 @@ struct Case {
   Vec3 omega, gamma;
 };
 
-Model make_model(const Case& c) {
-  return Model{Body::from_principal(c.inertia, 1.0, {0, 0, c.z0}, {0, 0, c.k3}),
-               QuadraticField::coulomb(c.mass_g, c.lambda)};
+QuadraticModel make_model(const Case& c) {
+  return QuadraticModel{Body::from_principal(c.inertia, 1.0, {0, 0, c.z0}, {0, 0, c.k3}),
+                        QuadraticField::coulomb(c.mass_g, c.lambda)};
 }
 
 class LagrangeCases : public ::testing::TestWithParam<Case> {};
 
 TEST_P(LagrangeCases, MatchesNumericalMotionAndPeriod) {
   const Case& c = GetParam();
-  const Model model = make_model(c);
+  const QuadraticModel model = make_model(c);
   const State x0 = state_from_omega(model.body, c.omega, c.gamma.normalized());
   const LagrangeCase sol = lagrange_case(model, x0);
   ASSERT_FALSE(sol.steady);
@@ -93,7 +93,7 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(LagrangeCase, QuarticCoefficientsMatchSpec) {
   // Spec §6: γ̇3² = F(γ3) with E, a, a1, b, c; checked against γ̇3 computed from the state.
   const Case c{"x", {2, 2, 1}, 3.0, 0.5, 1.5, 0.0, {0.3, 0.2, 2.0}, {0.4, -0.3, 0.866}};
-  const Model model = make_model(c);
+  const QuadraticModel model = make_model(c);
   const State x0 = state_from_omega(model.body, c.omega, c.gamma.normalized());
   const LagrangeQuartic Q = lagrange_quartic(model, x0);
   const double u = x0.gamma.z();
@@ -107,7 +107,7 @@ TEST(LagrangeCase, QuarticCoefficientsMatchSpec) {
 }
 
 TEST(LagrangeCase, RejectsAsymmetricBody) {
-  const Model model{Body::from_principal({1, 2, 3}, 1.0, Vec3::Zero()), QuadraticField{}};
+  const QuadraticModel model{Body::from_principal({1, 2, 3}, 1.0, Vec3::Zero()), QuadraticField{}};
   EXPECT_THROW(lagrange_case(model, State{}), InputError);
 }
 

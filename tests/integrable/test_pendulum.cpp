@@ -35,8 +35,8 @@ class PendulumCases : public ::testing::TestWithParam<Case> {};
 
 TEST_P(PendulumCases, MatchesNumericalMotionAndPeriod) {
   const Case& c = GetParam();
-  const Model model{Body::from_principal(c.inertia, 1.0, {c.x0, c.y0, 0.0}),
-                    QuadraticField::coulomb(c.g, c.lambda)};
+  const QuadraticModel model{Body::from_principal(c.inertia, 1.0, {c.x0, c.y0, 0.0}),
+                             QuadraticField::coulomb(c.g, c.lambda)};
   const State x0 =
       state_from_omega(model.body, {0, 0, c.r}, {std::cos(c.phi), -std::sin(c.phi), 0});
   ASSERT_TRUE(pendulum_holds(model, x0));
@@ -92,8 +92,8 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(Pendulum, GradientPeriodIsTheClassicalSmallOscillationLimit) {
   // Small libration of θ = 2φ: period → 2π/ω0, ω0² = λ(B − A)/C (spec §10).
-  const Model model{Body::from_principal({1, 2, 2.5}, 1.0, Vec3::Zero()),
-                    QuadraticField::coulomb(0.0, 3.0)};
+  const QuadraticModel model{Body::from_principal({1, 2, 2.5}, 1.0, Vec3::Zero()),
+                             QuadraticField::coulomb(0.0, 3.0)};
   const State x0 = state_from_omega(model.body, {0, 0, 0}, {std::cos(1e-4), -std::sin(1e-4), 0});
   const Pendulum p = pendulum(model, x0);
   const double w0 = std::sqrt(3.0 * (2 - 1) / 2.5);
@@ -107,8 +107,8 @@ TEST(Pendulum, GradientPeriodIsTheClassicalSmallOscillationLimit) {
 }
 
 TEST(Pendulum, RejectsStateOutOfThePlane) {
-  const Model model{Body::from_principal({1, 2, 2.5}, 1.0, Vec3::Zero()),
-                    QuadraticField::coulomb(0.0, 3.0)};
+  const QuadraticModel model{Body::from_principal({1, 2, 2.5}, 1.0, Vec3::Zero()),
+                             QuadraticField::coulomb(0.0, 3.0)};
   const State x0 = state_from_omega(model.body, {0.1, 0, 1}, {1, 0, 0});
   std::string why;
   EXPECT_FALSE(pendulum_holds(model, x0, &why));

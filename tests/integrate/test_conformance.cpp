@@ -91,13 +91,13 @@ template <class T>
 class Conformance : public ::testing::Test {};
 
 template <class T>
-Model conformance_model() {
+QuadraticModel conformance_model() {
   return test::generic_model(T::gyrostat ? Vec3(0.1, -0.2, 0.05) : Vec3::Zero());
 }
 TYPED_TEST_SUITE(Conformance, Steppers);
 
 TYPED_TEST(Conformance, SatisfiesTheStepperConcept) {
-  static_assert(FixedStepper<decltype(TypeParam::make()), Model>);
+  static_assert(FixedStepper<decltype(TypeParam::make()), QuadraticModel>);
   EXPECT_EQ(TypeParam::make().order(), TypeParam::order);
 }
 
@@ -110,7 +110,7 @@ constexpr double kOrderSlack = 0.2;
 constexpr double kErrorFloor = 5e-14;
 
 TYPED_TEST(Conformance, ObservedOrder) {
-  const Model m = conformance_model<TypeParam>();
+  const QuadraticModel m = conformance_model<TypeParam>();
   const State x0 = test::generic_state(m);
   const State ref = test::reference_solution(m, x0, TypeParam::T, 1e-15);
   std::vector<double> err;
@@ -133,7 +133,7 @@ constexpr int kCasimirSteps = 20000;
 
 TYPED_TEST(Conformance, CasimirsToRoundOff) {
   if (!TypeParam::poisson) GTEST_SKIP() << "not a Poisson integrator";
-  const Model m = conformance_model<TypeParam>();
+  const QuadraticModel m = conformance_model<TypeParam>();
   State x = test::generic_state(m);
   const double g0 = geometric(x), a0 = area(x);
   auto s = TypeParam::make();
@@ -158,7 +158,7 @@ TYPED_TEST(Conformance, SymmetricMethodsReturnOnNegativeStep) {
   if constexpr (!TypeParam::poisson) {
     GTEST_SKIP() << "Runge–Kutta methods here are not symmetric";
   } else {
-    const Model m = conformance_model<TypeParam>();
+    const QuadraticModel m = conformance_model<TypeParam>();
     const State x0 = test::generic_state(m);
     auto s = TypeParam::make();
     State x = x0;
@@ -179,7 +179,7 @@ TYPED_TEST(Conformance, SymmetricMethodsReturnOnNegativeStep) {
 constexpr int kEnergySteps = 50000;
 
 template <class S>
-void energy_error_profile(S s, const Model& m, double h, double& first, double& last) {
+void energy_error_profile(S s, const QuadraticModel& m, double h, double& first, double& last) {
   State x = test::generic_state(m);
   const double e0 = energy(m, x);
   first = last = 0;
@@ -193,7 +193,7 @@ void energy_error_profile(S s, const Model& m, double h, double& first, double& 
 
 TYPED_TEST(Conformance, EnergyErrorBoundedWithoutDrift) {
   if (!TypeParam::poisson) GTEST_SKIP() << "not symplectic";
-  const Model m = conformance_model<TypeParam>();
+  const QuadraticModel m = conformance_model<TypeParam>();
   double first, last;
   energy_error_profile(TypeParam::make(), m, TypeParam::h0, first, last);
   EXPECT_LT(last, 2.0 * first + 64 * kEps) << "first tenth " << first << ", last tenth " << last;
@@ -201,7 +201,7 @@ TYPED_TEST(Conformance, EnergyErrorBoundedWithoutDrift) {
 
 // The same measure must see the drift of a non-symplectic method, or it proves nothing.
 TEST(ConformanceControl, Rk4EnergyDriftIsDetected) {
-  const Model m = test::generic_model(Vec3(0.1, -0.2, 0.05));
+  const QuadraticModel m = test::generic_model(Vec3(0.1, -0.2, 0.05));
   double first, last;
   energy_error_profile(Rk4Stepper(), m, 0.05, first, last);
   EXPECT_GT(last, 2.0 * first);

@@ -80,7 +80,7 @@ TEST(Hermite, ErrorOfDegreeEightIsTheNodePolynomialSquared) {
 
 /// Error of the continuous extension at the middle of one accepted step of size h from x0.
 template <class S>
-double midpoint_error(S& s, const Model& m, const State& x0, double h) {
+double midpoint_error(S& s, const QuadraticModel& m, const State& x0, double h) {
   State x = x0;
   double t = 0.0, dt = h;
   EXPECT_TRUE(s.try_step(m, x, t, dt)) << "step of " << h << " rejected";
@@ -100,7 +100,7 @@ struct OrderCase {
 };
 
 TEST(ContinuousExtension, ObservedOrderInsideAStep) {
-  const Model m = test::generic_model(Vec3(0.1, -0.2, 0.05));
+  const QuadraticModel m = test::generic_model(Vec3(0.1, -0.2, 0.05));
   const State x0 = test::generic_state(m);
   for (const OrderCase& c : {OrderCase{"rkf78", 0.8, 8.0}, OrderCase{"dopri5", 0.2, 5.0}}) {
     // A tolerance of 1 accepts any of these steps: the order is that of the formula, not of
@@ -124,7 +124,7 @@ TEST(ContinuousExtension, ObservedOrderInsideAStep) {
 
 /// The reference at the given times: splitting8 at h ≤ 0.005 landing on every time (error ~1e-15
 /// per unit time, test_physics), no interpolation involved.
-std::vector<State> reference_at(const Model& m, const State& x0, const OutputTimes& times,
+std::vector<State> reference_at(const QuadraticModel& m, const State& x0, const OutputTimes& times,
                                 double T) {
   std::vector<State> ref(static_cast<std::size_t>(times.size()));
   SplittingStepper s(composition_table("splitting8"));
@@ -140,7 +140,7 @@ std::vector<State> reference_at(const Model& m, const State& x0, const OutputTim
 constexpr double kEndErrorFactor = 2.0;
 
 TEST(OutputTimes, AdaptiveSamplesAgreeWithReferenceAsWellAsStepEnds) {
-  const Model m = test::generic_model(Vec3(0.1, -0.2, 0.05));
+  const QuadraticModel m = test::generic_model(Vec3(0.1, -0.2, 0.05));
   const State x0 = test::generic_state(m);
   constexpr double T = 10.0, kTol = 1e-10;
   const OutputTimes every = OutputTimes::every(0.05, 0.0, T);
@@ -179,7 +179,7 @@ TEST(OutputTimes, AdaptiveSamplesAgreeWithReferenceAsWellAsStepEnds) {
 }
 
 TEST(OutputTimes, FixedStepMethodsLandOnEveryOutputTime) {
-  const Model m = test::generic_model();
+  const QuadraticModel m = test::generic_model();
   const State x0 = test::generic_state(m);
   SplittingStepper s(composition_table("splitting6"));
   const OutputTimes every = OutputTimes::every(0.1, 0.0, 1.0);

@@ -15,16 +15,16 @@ namespace {
 
 /// The scenario of examples/lagrange_like.toml: a fast symmetric top (r = 4) whose first trial step
 /// of span/1000 = 10 at T = 1e4 overflowed.
-Model lagrange_like() {
-  return Model{Body::from_principal(Vec3(3.0, 3.0, 1.2), 2.0, Vec3(0, 0, 0.4)),
-               QuadraticField::from_g_R(1.0, 6.0)};
+QuadraticModel lagrange_like() {
+  return QuadraticModel{Body::from_principal(Vec3(3.0, 3.0, 1.2), 2.0, Vec3(0, 0, 0.4)),
+                        QuadraticField::from_g_R(1.0, 6.0)};
 }
-State lagrange_like_state(const Model& m) {
+State lagrange_like_state(const QuadraticModel& m) {
   return state_from_omega(m.body, Vec3(0.2, -0.1, 4.0), Vec3(0.6, 0.0, 0.8));
 }
 
 TEST(FirstStep, EstimatedFromTheProblemNotFromTheSpan) {
-  const Model m = lagrange_like();
+  const QuadraticModel m = lagrange_like();
   const State x0 = lagrange_like_state(m);
   Fehlberg78Stepper s(1e-12, 1e-12);
   const double h_short = s.initial_step(m, x0, 0.0, 10.0);
@@ -46,7 +46,7 @@ TEST(FirstStep, EstimatedFromTheProblemNotFromTheSpan) {
 constexpr double kLongRunDrift = 1e-6;
 
 TEST(AdaptiveDriver, LongRunsFinish) {
-  const Model m = lagrange_like();
+  const QuadraticModel m = lagrange_like();
   const State x0 = lagrange_like_state(m);
   for (const char* name : {"rkf78", "dopri5"}) {
     const MethodSettings settings{name, 0.0, 1e-12, 1e-12, std::nullopt};
@@ -63,7 +63,7 @@ TEST(AdaptiveDriver, LongRunsFinish) {
 
 TEST(AdaptiveDriver, NonFiniteTrialIsARejectedStep) {
   // A first trial of 10 time units overflows to NaN; the run shrinks it and goes on.
-  const Model m = lagrange_like();
+  const QuadraticModel m = lagrange_like();
   const State x0 = lagrange_like_state(m);
   Fehlberg78Stepper s(1e-12, 1e-12);
   const Outcome o = integrate(s, m, x0, 0.0, 100.0, IntegrateOptions{.initial_step = 10.0});
@@ -89,7 +89,7 @@ struct AcceptsNaN {
 };
 
 TEST(AdaptiveDriver, DriverRejectsNonFiniteTrialsOfAnyStepper) {
-  const Model m = test::generic_model();
+  const QuadraticModel m = test::generic_model();
   const State x0 = test::generic_state(m);
   AcceptsNaN s;
   const Outcome o = integrate(s, m, x0, 0.0, 10.0, IntegrateOptions{});
@@ -101,7 +101,7 @@ TEST(AdaptiveDriver, DriverRejectsNonFiniteTrialsOfAnyStepper) {
 }
 
 TEST(Driver, RunsThatCannotHappenAreBadInput) {
-  const Model m = test::brun_model();
+  const QuadraticModel m = test::brun_model();
   const State x0 = test::generic_state(m);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
@@ -135,7 +135,7 @@ TEST(Driver, RunsThatCannotHappenAreBadInput) {
 TEST(Driver, OutcomeTimeIsTheTimeOfItsState) {
   // RK4 with a step far beyond its stability limit on a fast spin overflows to inf/NaN: the
   // outcome holds the last finite state and its own time, steps × h.
-  const Model m = test::generic_model();
+  const QuadraticModel m = test::generic_model();
   const State x0 = state_from_omega(m.body, Vec3(1e3, -2e3, 5e2), Vec3(0.48, -0.6, 0.64));
   Rk4Stepper s;
   const Outcome o = integrate(s, m, x0, 0.0, 1e6, IntegrateOptions{.step = 10.0});

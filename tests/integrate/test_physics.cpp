@@ -19,7 +19,7 @@ using test::kEps;
 constexpr double kAgreement = 1e-10;
 
 TEST(Agreement, SplittingAndAdaptiveAgreeOnChaoticCase) {
-  const Model m = test::generic_model(Vec3(0.1, -0.2, 0.05));
+  const QuadraticModel m = test::generic_model(Vec3(0.1, -0.2, 0.05));
   const State x0 = test::generic_state(m);
   const State ref = test::reference_solution(m, x0, 10.0, 1e-14);
   for (const char* name : {"splitting6", "splitting8"}) {
@@ -38,7 +38,7 @@ TEST(Agreement, SplittingAndAdaptiveAgreeOnChaoticCase) {
 // its truncation error, which for splitting6 at h = 0.01 over T = 10 is ~1e-12; bound 1e-10.
 constexpr double kStayPut = 1e-10;
 
-void expect_stays_put(const Model& m, const Vec3& w, const Vec3& gamma) {
+void expect_stays_put(const QuadraticModel& m, const Vec3& w, const Vec3& gamma) {
   const State x0 = state_from_omega(m.body, w, gamma);
   const State d = rhs(m, x0);
   ASSERT_LT(std::max(d.m.norm(), d.gamma.norm()), 1e3 * kEps) << "not a permanent rotation";
@@ -48,13 +48,13 @@ void expect_stays_put(const Model& m, const Vec3& w, const Vec3& gamma) {
 }
 
 TEST(PermanentRotations, AboutPrincipalAxisAtAnySpin) {
-  const Model m = test::brun_model();
+  const QuadraticModel m = test::brun_model();
   for (double W : {0.3, 1.7}) expect_stays_put(m, Vec3(0, 0, W), Vec3(0, 0, 1));
 }
 
 TEST(PermanentRotations, AnyAxisWhenOmegaSquaredIsLambda) {
-  const Model m{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3::Zero()),
-                QuadraticField::coulomb(0.0, 0.64)};
+  const QuadraticModel m{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3::Zero()),
+                         QuadraticField::coulomb(0.0, 0.64)};
   const Vec3 n = Vec3(0.48, -0.6, 0.64);
   expect_stays_put(m, std::sqrt(0.64) * n, n);
   expect_stays_put(m, -std::sqrt(0.64) * n, n);
@@ -66,14 +66,14 @@ TEST(PermanentRotations, StaudeConeGeneratorWithCentreOfMass) {
   const Vec3 I(1.0, 1.5, 2.2), gamma = Vec3(0.48, -0.6, 0.64);
   const double a = 0.2, b = 0.15, M = 1.0, g = 1.0, lambda = 0.5;
   const Vec3 r0 = a * gamma + b * I.cwiseProduct(gamma);
-  const Model m{Body::from_principal(I, M, r0), QuadraticField::coulomb(g, lambda)};
+  const QuadraticModel m{Body::from_principal(I, M, r0), QuadraticField::coulomb(g, lambda)};
   const double Omega = std::sqrt(lambda + M * g * b);
   expect_stays_put(m, Omega * gamma, gamma);
 }
 
 // Brun's integral is conserved to the method's accuracy when r0 = 0 and visibly not otherwise.
 TEST(BrunIntegral, ConservedOnlyWithoutCentreOfMassOffset) {
-  const Model brun = test::brun_model();
+  const QuadraticModel brun = test::brun_model();
   ASSERT_TRUE(brun_holds(brun));
   const State x0 = test::generic_state(brun);
   SplittingStepper s(composition_table("splitting6"));
@@ -86,8 +86,8 @@ TEST(BrunIntegral, ConservedOnlyWithoutCentreOfMassOffset) {
   EXPECT_LT(drift, 1e-10);
 
   // Brun's field from a plane not through O has a linear term M g r0·γ (g = −N d): no integral.
-  const Model off{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3(0.3, 0.2, 0.1)),
-                  QuadraticField::brun(0.8, 0.5)};
+  const QuadraticModel off{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3(0.3, 0.2, 0.1)),
+                           QuadraticField::brun(0.8, 0.5)};
   ASSERT_FALSE(brun_holds(off));
   ASSERT_EQ(conserved_integrals(off).size(), 3u);
   double change = 0;
@@ -103,7 +103,7 @@ TEST(BrunIntegral, ConservedOnlyWithoutCentreOfMassOffset) {
 // of round-off, c·ε·√N with c = 8 (Brouwer's law). A biased rounding — e.g. cos θ − 1 formed as a
 // difference, or an increment rounded twice the same way — drifts like N·ε/2 ≈ 1e-10 here.
 TEST(LongRun, CasimirsOverAMillionSteps) {
-  const Model m = test::generic_model(Vec3(0.1, -0.2, 0.05));
+  const QuadraticModel m = test::generic_model(Vec3(0.1, -0.2, 0.05));
   State x = test::generic_state(m);
   const double g0 = geometric(x), a0 = area(x);
   SplittingStepper s(composition_table("splitting2"));
@@ -126,7 +126,7 @@ TEST(LongRun, CasimirsOverAMillionSteps) {
 
 TEST(Outcome, NonFiniteStateStopsAtOnce) {
   // RK4 with a step far beyond its stability limit on a fast spin overflows to inf/NaN.
-  const Model m = test::generic_model();
+  const QuadraticModel m = test::generic_model();
   const State x0 = state_from_omega(m.body, Vec3(1e3, -2e3, 5e2), Vec3(0.48, -0.6, 0.64));
   Rk4Stepper s;
   const Outcome o = integrate(s, m, x0, 0.0, 1e6, IntegrateOptions{.step = 10.0});
@@ -136,7 +136,7 @@ TEST(Outcome, NonFiniteStateStopsAtOnce) {
 }
 
 TEST(Outcome, StepLimit) {
-  const Model m = test::generic_model();
+  const QuadraticModel m = test::generic_model();
   SplittingStepper s(composition_table("splitting2"));
   const Outcome o = integrate(s, m, test::generic_state(m), 0.0, 1.0,
                               IntegrateOptions{.step = 0.01, .max_steps = 10});
@@ -145,7 +145,7 @@ TEST(Outcome, StepLimit) {
 }
 
 TEST(Outcome, AdaptiveLandsExactlyOnEndTime) {
-  const Model m = test::generic_model();
+  const QuadraticModel m = test::generic_model();
   Dopri5Stepper s(1e-10, 1e-10);
   const Outcome o = integrate(s, m, test::generic_state(m), 0.0, 3.7, IntegrateOptions{});
   EXPECT_EQ(o.status, Status::finished);
@@ -154,7 +154,7 @@ TEST(Outcome, AdaptiveLandsExactlyOnEndTime) {
 
 TEST(Outcome, AdaptiveUnderflowOnImpossibleTolerance) {
   // A tolerance below the round-off of the state cannot be met: the step shrinks to underflow.
-  const Model m = test::generic_model();
+  const QuadraticModel m = test::generic_model();
   Dopri5Stepper s(1e-30, 1e-30);
   const Outcome o =
       integrate(s, m, test::generic_state(m), 0.0, 1.0, IntegrateOptions{.max_steps = 1'000'000});
@@ -174,7 +174,7 @@ namespace {
 constexpr double kDenseAgreement = 1e-8;
 
 TEST(DenseOutput, Dopri5InterpolatesInsideSteps) {
-  const Model m = test::generic_model(Vec3(0.1, -0.2, 0.05));
+  const QuadraticModel m = test::generic_model(Vec3(0.1, -0.2, 0.05));
   const State x0 = test::generic_state(m);
   Dopri5Dense<QuadraticField> dense(m, 1e-10, 1e-10);
   dense.initialize(x0, 0.0, 0.01);

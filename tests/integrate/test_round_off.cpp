@@ -28,7 +28,7 @@ struct Profile {
   std::vector<double> geometric, area;  // RMS errors at the checkpoints
 };
 
-Profile ensemble(const SplittingStepper& prototype, const Model& m) {
+Profile ensemble(const SplittingStepper& prototype, const QuadraticModel& m) {
   std::vector<double> sg(kCheckpoints, 0.0), sa(kCheckpoints, 0.0);
   for (int run = 0; run < kRuns; ++run) {
     const double d = 0.01 * run;
@@ -73,7 +73,7 @@ double unbiased_bound(const SplittingStepper& s) {
 }
 
 void expect_brouwer(const SplittingStepper& s, const char* what) {
-  const Model m = test::generic_model(Vec3(0.1, -0.2, 0.05));
+  const QuadraticModel m = test::generic_model(Vec3(0.1, -0.2, 0.05));
   const Profile p = ensemble(s, m);
   for (const auto& [rms, name] : {std::pair{&p.geometric, "gamma.gamma"}, {&p.area, "m.gamma"}}) {
     ASSERT_GT(rms->front(), 0.0) << what << " " << name;

@@ -64,7 +64,8 @@ TEST(SpinFlow, IsTheRotationAboutTheMomentum) {
 constexpr double kExactAgreement = 1e-13;
 
 TEST(SpinSplit, ExactForSymmetricFreeBody) {
-  const Model model{Body::from_principal(Vec3(1.0, 1.0, 1.7), 1.0, Vec3::Zero()), QuadraticField{}};
+  const QuadraticModel model{Body::from_principal(Vec3(1.0, 1.0, 1.7), 1.0, Vec3::Zero()),
+                             QuadraticField{}};
   const State x0 =
       state_from_omega(model.body, Vec3(0.4, -0.7, 1.2), Vec3(0.3, 0.5, 0.8).normalized());
   // By moment: 0, 1 the equal axes, 2 the largest; reference axis (axes[2]) = 1.

@@ -64,9 +64,9 @@ IntegrateOverrides with_tol(double tol) {
 
 TEST(Scenario, ValidFileBuildsTheModel) {
   const Scenario s = parse_scenario(kValid, "s.toml");
-  EXPECT_EQ(s.model.body.inertia(), Vec3(1.0, 1.5, 2.2));
-  EXPECT_DOUBLE_EQ(s.model.field.lambda_, 0.5);
-  EXPECT_EQ(omega(s.model.body, s.initial), Vec3(0.5, 1.1, -0.4));
+  EXPECT_EQ(s.model.body().inertia(), Vec3(1.0, 1.5, 2.2));
+  EXPECT_DOUBLE_EQ(s.model.quadratic().field.lambda_, 0.5);
+  EXPECT_EQ(omega(s.model.body(), s.initial), Vec3(0.5, 1.1, -0.4));
   EXPECT_EQ(*s.integrate.t_end, 10.0);
   const MethodSettings m = resolve_method(s, {});
   EXPECT_EQ(m.name, kDefaultFixedMethod);
@@ -145,11 +145,11 @@ TEST(Scenario, FullTensorRotatesTheInitialVectors) {
       replace(kValid, "inertia = [1.0, 1.5, 2.2]",
               "inertia_tensor = [[1.25, 0.25, 0.0], [0.25, 1.25, 0.0], [0.0, 0.0, 2.2]]");
   const Scenario s = parse_scenario(t, "s.toml");
-  EXPECT_NEAR(s.model.body.A(), 1.0, 1e-14);
-  EXPECT_NEAR(s.model.body.B(), 1.5, 1e-14);
+  EXPECT_NEAR(s.model.body().A(), 1.0, 1e-14);
+  EXPECT_NEAR(s.model.body().B(), 1.5, 1e-14);
   // ω in the body frame is Pᵀ ω_user: its norm and its product with γ are frame-invariant.
-  EXPECT_NEAR(omega(s.model.body, s.initial).norm(), Vec3(0.5, 1.1, -0.4).norm(), 1e-14);
-  EXPECT_NEAR(omega(s.model.body, s.initial).dot(s.initial.gamma),
+  EXPECT_NEAR(omega(s.model.body(), s.initial).norm(), Vec3(0.5, 1.1, -0.4).norm(), 1e-14);
+  EXPECT_NEAR(omega(s.model.body(), s.initial).dot(s.initial.gamma),
               Vec3(0.5, 1.1, -0.4).dot(Vec3(0.48, -0.6, 0.64)), 1e-14);
 }
 

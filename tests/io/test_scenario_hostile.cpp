@@ -124,7 +124,7 @@ TEST(ScenarioHostile, IntegersReadExactlyOrRefused) {
       "[field]\ng = 1\nlambda = 1\n" +
           kInitial + "[integrate]\nmax_steps = 9007199254740992\n",
       "s.toml");
-  EXPECT_EQ(s.model.body.mass(), 0x1p62);
+  EXPECT_EQ(s.model.body().mass(), 0x1p62);
   EXPECT_EQ(*s.integrate.max_steps, std::int64_t{1} << 53);
   // Integer keys: integers only, in range.
   const std::string field = kBody + "[field]\ng = 1\nlambda = 1\n" + kInitial;

@@ -176,12 +176,12 @@ TEST(ScenarioKeys, PointsWithoutKindArePointMasses) {
       "[3, 0, 0, 1], [3, 0, 0, -1]]\n[field]\nmu = 1.0\nR = 10.0\n" +
       kInitial;
   const Scenario s = parse_scenario(text, "s.toml");
-  ASSERT_TRUE(s.exact.mass_model);
-  ASSERT_TRUE(std::holds_alternative<PointMasses>(*s.exact.mass_model));
+  ASSERT_TRUE(s.model.mass_model());
+  ASSERT_TRUE(std::holds_alternative<PointMasses>(*s.model.mass_model()));
   // M = Σm = 12; A = Σ m (y² + z²) = 2·2 + 3·2 = 10, B = 1·2 + 3·2 = 8, C = 1·2 + 2·2 = 6, exact
   // in binary; the tensor is diagonal, so the axes are kept.
-  EXPECT_EQ(s.model.body.mass(), 12.0);
-  EXPECT_EQ(s.model.body.inertia(), Vec3(10.0, 8.0, 6.0));
+  EXPECT_EQ(s.model.body().mass(), 12.0);
+  EXPECT_EQ(s.model.body().inertia(), Vec3(10.0, 8.0, 6.0));
   // The other kinds follow from their own keys too.
   EXPECT_NO_THROW(
       parse_scenario("[mass_model]\nsemi_axes = [1.0, 2.0, 3.0]\nmass = 1.0\n"

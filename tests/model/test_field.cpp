@@ -16,7 +16,7 @@ using test::kEps;
 constexpr double kFdStep = 1e-4;
 double fd_tolerance(double v_scale) { return 16 * kEps * v_scale / kFdStep; }
 
-Vec3 fd_gradient(const Model& m, const Vec3& gamma) {
+Vec3 fd_gradient(const QuadraticModel& m, const Vec3& gamma) {
   Vec3 g;
   for (int i = 0; i < 3; ++i) {
     Vec3 e = Vec3::Zero();
@@ -27,7 +27,7 @@ Vec3 fd_gradient(const Model& m, const Vec3& gamma) {
 }
 
 TEST(QuadraticField, MomentIsGammaCrossFiniteDifferenceGradient) {
-  const Model m = test::generic_model();
+  const QuadraticModel m = test::generic_model();
   for (const Vec3& gamma : {Vec3(0.48, -0.6, 0.64), Vec3(1, 0, 0), Vec3(0.0, 0.6, -0.8)}) {
     const Vec3 L = moment(m, gamma);
     const Vec3 L_fd = gamma.cross(fd_gradient(m, gamma));
@@ -38,7 +38,7 @@ TEST(QuadraticField, MomentIsGammaCrossFiniteDifferenceGradient) {
 
 TEST(QuadraticField, MomentMatchesExpandedEulerPoisson) {
   // Spec §4 expanded: L = ((C−B) λ γ2γ3 + Mg(z0γ2 − y0γ3), (A−C) λ γ1γ3 + …, …).
-  const Model m = test::generic_model();
+  const QuadraticModel m = test::generic_model();
   const Vec3 gm(0.48, -0.6, 0.64);
   const double A = m.body.A(), B = m.body.B(), C = m.body.C(), lam = m.field.lambda_;
   const double Mg = m.body.mass() * m.field.g;
@@ -76,7 +76,7 @@ TEST(QuadraticField, BrunPlaneNotThroughOriginIsLinearPlusQuadratic) {
     J += mi * (r.squaredNorm() * Mat3::Identity() - r * r.transpose());
   }
   const Body body = Body::from_tensor(J, M, first / M);
-  const Model model{body, QuadraticField::brun(N, d)};
+  const QuadraticModel model{body, QuadraticField::brun(N, d)};
   const Mat3& P = body.principal_axes();
   auto direct = [&](const Vec3& gamma_body) {
     const Vec3 gu = P * gamma_body;

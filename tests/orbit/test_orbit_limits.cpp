@@ -16,7 +16,9 @@ using test::kOrbitEps;
 
 constexpr double kLambda = 1.7;
 
-Model fixed_centre(const Body& body) { return Model{body, QuadraticField::coulomb(0.0, kLambda)}; }
+QuadraticModel fixed_centre(const Body& body) {
+  return QuadraticModel{body, QuadraticField::coulomb(0.0, kLambda)};
+}
 
 double distance_mg(const OrbitState& a, const State& b) {
   return std::max((a.m - b.m).cwiseAbs().maxCoeff(), (a.gamma - b.gamma).cwiseAbs().maxCoeff());

@@ -47,7 +47,7 @@ TEST(StabilityCli, EquilibriaJsonListsEveryEquilibrium) {
   const CliResult r = newtop("equilibria " + file + " --json");
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = io::Json::parse(r.out);
-  const Model model = io::load_scenario(file).model;
+  const QuadraticModel model = io::load_scenario(file).model.quadratic();
   ASSERT_EQ(j["count"].get<std::size_t>(), j["equilibria"].size());
   EXPECT_EQ(j["count"].get<std::size_t>(), find_equilibria(model).equilibria.size());
   EXPECT_TRUE(j["count_rule"]["holds"].get<bool>());
@@ -73,7 +73,7 @@ TEST(StabilityCli, RotationsWritesTheConeToCsv) {
   fs::remove(csv);
   ASSERT_EQ(rows.front(), "gamma1,gamma2,gamma3,omega_squared,admissible");
   EXPECT_EQ(rows.size() - 1, j["cone_samples"].get<std::size_t>());
-  const Body body = io::load_scenario(file).model.body;
+  const Body body = io::load_scenario(file).model.body();
   for (std::size_t i = 1; i < rows.size(); ++i) {
     Vec3 g;
     ASSERT_EQ(std::sscanf(rows[i].c_str(), "%lf,%lf,%lf", &g.x(), &g.y(), &g.z()), 3);
@@ -247,7 +247,8 @@ TEST(StabilityCli, RequestsBeyondTheDocumentedBoundsAreBadInput) {
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.out.find("--scan: expected at most 1000000 grid points"), std::string::npos) << r.out;
   // The library enforces the same bounds.
-  const Model m = io::load_scenario(example("rotation_staude_cone.toml")).model;
+  const QuadraticModel m =
+      io::load_scenario(example("rotation_staude_cone.toml")).model.quadratic();
   EXPECT_THROW(permanent_rotations(m, kMaxRotationSamples + 1), InputError);
   EXPECT_NO_THROW(permanent_rotations(m, 2));
   EXPECT_THROW(scan_omega(m, 2, 0.0, 1.0, kMaxScanPoints + 1), InputError);

@@ -27,17 +27,17 @@ constexpr double kStableAmplification = 100.0;
 // nonlinearity saturates it at O(1); either way it exceeds 1e4 pushes.
 constexpr double kDepartFactor = 1e4;
 
-Model model_with(const Vec3& I, const Vec3& r0, double lambda) {
-  return Model{Body::from_principal(I, 1.0, r0), QuadraticField::coulomb(1.0, lambda)};
+QuadraticModel model_with(const Vec3& I, const Vec3& r0, double lambda) {
+  return QuadraticModel{Body::from_principal(I, 1.0, r0), QuadraticField::coulomb(1.0, lambda)};
 }
 
 TEST(PermanentRotations, PrincipalAxisSpinsStayPutAtAnyOmega) {
   // r0 = 0: every principal axis; r0 along e_z: ±e_z (spec §8).
-  const Model brun = model_with(Vec3(1.0, 1.6, 2.1), Vec3::Zero(), 0.8);
-  const Model axial = model_with(Vec3(1.0, 1.6, 2.1), Vec3(0, 0, 0.3), 0.8);
+  const QuadraticModel brun = model_with(Vec3(1.0, 1.6, 2.1), Vec3::Zero(), 0.8);
+  const QuadraticModel axial = model_with(Vec3(1.0, 1.6, 2.1), Vec3(0, 0, 0.3), 0.8);
   EXPECT_EQ(permanent_rotations(brun, 8).principal_axes.size(), 6u);
   EXPECT_EQ(permanent_rotations(axial, 8).principal_axes.size(), 2u);
-  for (const Model* m : {&brun, &axial}) {
+  for (const QuadraticModel* m : {&brun, &axial}) {
     for (const Vec3& axis : permanent_rotations(*m, 8).principal_axes) {
       for (double w : {0.3, 1.1, 2.0}) {
         const State s = permanent_rotation(m->body, axis, w);
@@ -49,7 +49,7 @@ TEST(PermanentRotations, PrincipalAxisSpinsStayPutAtAnyOmega) {
 }
 
 TEST(PermanentRotations, AnyAxisAtRootLambdaStaysPut) {
-  const Model m = model_with(Vec3(1.0, 1.6, 2.1), Vec3::Zero(), 1.7);
+  const QuadraticModel m = model_with(Vec3(1.0, 1.6, 2.1), Vec3::Zero(), 1.7);
   const RotationFamilies f = permanent_rotations(m, 8);
   ASSERT_TRUE(f.any_axis_omega.has_value());
   EXPECT_EQ(*f.any_axis_omega, std::sqrt(1.7));
@@ -65,7 +65,7 @@ TEST(PermanentRotations, AnyAxisAtRootLambdaStaysPut) {
 TEST(PermanentRotations, StaudeConeAxesStayPut) {
   // Generic r0 and a case with x0 = 0 (the cone splits into two planes).
   for (const Vec3& r0 : {Vec3(0.3, -0.2, 0.25), Vec3(0.0, 0.3, -0.2)}) {
-    const Model m = model_with(Vec3(1.0, 1.6, 2.1), r0, 1.0);
+    const QuadraticModel m = model_with(Vec3(1.0, 1.6, 2.1), r0, 1.0);
     const RotationFamilies f = permanent_rotations(m, 24);
     ASSERT_FALSE(f.cone.empty());
     int integrated = 0, inadmissible = 0;
@@ -87,7 +87,7 @@ TEST(PermanentRotations, StaudeConeAxesStayPut) {
 }
 
 TEST(StabilityDynamics, StableSpinStaysWithinABoundProportionalToThePush) {
-  const Model m = model_with(Vec3(2.0, 2.6, 1.2), Vec3::Zero(), 1.0);  // C least: stable
+  const QuadraticModel m = model_with(Vec3(2.0, 2.6, 1.2), Vec3::Zero(), 1.0);  // C least: stable
   const State s = principal_spin(m.body, 2, 1.3);
   ASSERT_TRUE(linear_stability(m, s).linearly_stable);
   for (double push : {1e-6, 1e-4}) {
@@ -99,7 +99,8 @@ TEST(StabilityDynamics, StableSpinStaysWithinABoundProportionalToThePush) {
 }
 
 TEST(StabilityDynamics, UnstableSpinDeparts) {
-  const Model m = model_with(Vec3(1.0, 2.2, 1.6), Vec3::Zero(), 1.0);  // C middle: unstable
+  const QuadraticModel m =
+      model_with(Vec3(1.0, 2.2, 1.6), Vec3::Zero(), 1.0);  // C middle: unstable
   const State s = principal_spin(m.body, 2, 1.5);
   const Spectrum sp = linear_stability(m, s);
   ASSERT_FALSE(sp.linearly_stable);
@@ -113,7 +114,7 @@ TEST(StabilityDynamics, UnstableSpinDeparts) {
 TEST(StabilityDynamics, EquilibriaVerdictsMatchPotentialType) {
   // At rest: a minimum of V is Lyapunov stable (energy–Casimir), a saddle or maximum is linearly
   // unstable (a real pair s² = −h/I > 0), and a pushed minimum stays close.
-  const Model m = model_with(Vec3(1.0, 1.6, 2.1), Vec3(0.2, -0.1, 0.15), 1.0);
+  const QuadraticModel m = model_with(Vec3(1.0, 1.6, 2.1), Vec3(0.2, -0.1, 0.15), 1.0);
   for (const Equilibrium& e : find_equilibria(m).equilibria) {
     const State s = state_from_omega(m.body, Vec3::Zero(), e.gamma);
     EXPECT_LE(fixed_point_residual(m, s), 64 * stability_test::kEps);
@@ -130,7 +131,7 @@ TEST(StabilityDynamics, EquilibriaVerdictsMatchPotentialType) {
 }
 
 TEST(StabilityDynamics, ResidualRejectsStatesThatAreNotFixedPoints) {
-  const Model m = model_with(Vec3(1.0, 1.6, 2.1), Vec3(0.2, -0.1, 0.15), 1.0);
+  const QuadraticModel m = model_with(Vec3(1.0, 1.6, 2.1), Vec3(0.2, -0.1, 0.15), 1.0);
   const State s = state_from_omega(m.body, Vec3(0.1, 0.2, 0.3), Vec3(0.6, 0.0, 0.8));
   EXPECT_GT(fixed_point_residual(m, s), 1e3 * kFixedPointTolerance);
 }

@@ -26,14 +26,14 @@ constexpr double kResidual = 128 * kEps;
 // points that are O(1e-3) apart in the random cases.
 constexpr double kSamePoint = 1e-9;
 
-double residual(const Model& model, const Vec3& gamma) {
+double residual(const QuadraticModel& model, const Vec3& gamma) {
   const Vec3 grad = grad_gamma(model, gamma);
   return gamma.cross(grad).norm() / grad.norm();
 }
 
 // At an equilibrium ∂V/∂γ = b + λIγ = κγ can be much shorter than its two terms (κ small): the
 // residual, relative to |∂V/∂γ|, carries the terms' rounding relative to that shorter vector.
-double residual_bound(const Model& model, const Vec3& g) {
+double residual_bound(const QuadraticModel& model, const Vec3& g) {
   const Vec3 b = model.body.mass() * model.field.g * model.body.center_of_mass();
   const Vec3 d = model.field.lambda_ * model.body.inertia();
   const double terms = b.norm() + d.cwiseProduct(g).norm();
@@ -42,7 +42,7 @@ double residual_bound(const Model& model, const Vec3& g) {
 
 /// Brute force: Newton on (b + λIγ − κγ = 0, ½(γ·γ − 1) = 0) from `starts` random points on the
 /// sphere; the distinct converged solutions.
-std::vector<Vec3> multistart(const Model& model, std::mt19937& rng, int starts) {
+std::vector<Vec3> multistart(const QuadraticModel& model, std::mt19937& rng, int starts) {
   const Vec3 b = model.body.mass() * model.field.g * model.body.center_of_mass();
   const Vec3 d = model.field.lambda_ * model.body.inertia();
   std::vector<Vec3> found;
@@ -73,7 +73,7 @@ std::vector<Vec3> multistart(const Model& model, std::mt19937& rng, int starts) 
 }
 
 /// Independent type check: V on a small circle around γ on the sphere against V(γ).
-EquilibriumType type_by_sampling(const Model& model, const Vec3& gamma) {
+EquilibriumType type_by_sampling(const QuadraticModel& model, const Vec3& gamma) {
   const Vec3 t1 =
       gamma.cross(std::abs(gamma.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).normalized();
   const Vec3 t2 = gamma.cross(t1);
@@ -94,7 +94,8 @@ TEST(Equilibria, BrunCaseHasSixEquilibriaWithTypesByMoment) {
   // maximum; λ < 0 reversed. Moments deliberately not sorted by axis.
   const Body body = Body::from_principal(Vec3(1.5, 2.2, 1.0), 1.0, Vec3::Zero());
   for (double lambda : {0.7, -0.7}) {
-    const EquilibriumSet set = find_equilibria(Model{body, QuadraticField::coulomb(1.0, lambda)});
+    const EquilibriumSet set =
+        find_equilibria(QuadraticModel{body, QuadraticField::coulomb(1.0, lambda)});
     ASSERT_EQ(set.equilibria.size(), 6u);
     EXPECT_TRUE(set.count_rule_holds());
     for (const auto& e : set.equilibria) {
@@ -125,7 +126,8 @@ TEST(Equilibria, RandomParametersAgreeWithMultistartSearch) {
     Vec3 r0 = std::pow(10.0, uniform(rng, -2.5, 0.3)) * random_unit(rng);
     if (trial % 4 == 0) r0[trial % 3] = 0.0;
     const double lambda = (trial % 2 ? 1.0 : -1.0) * uniform(rng, 0.5, 3.0);
-    const Model model{stability_test::random_body(rng, r0), QuadraticField::coulomb(1.0, lambda)};
+    const QuadraticModel model{stability_test::random_body(rng, r0),
+                               QuadraticField::coulomb(1.0, lambda)};
     const EquilibriumSet set = find_equilibria(model);
     const std::vector<Vec3> brute = multistart(model, rng, 300);
     ASSERT_EQ(set.equilibria.size(), brute.size()) << "trial " << trial;
@@ -150,8 +152,9 @@ TEST(Equilibria, RandomParametersAgreeWithMultistartSearch) {
 TEST(Equilibria, SecularPolynomialVanishesAtEveryMultiplier) {
   // P(κ) = Π (κ − d_g)² (Σ β_g/(κ − d_g)² − 1): at each κ the secular equation holds, so P's
   // value is round-off relative to the size of its terms, scale^6.
-  const Model model{Body::from_principal(Vec3(1.0, 1.4, 1.9), 2.0, Vec3(0.05, -0.03, 0.02)),
-                    QuadraticField::coulomb(1.0, 1.2)};
+  const QuadraticModel model{
+      Body::from_principal(Vec3(1.0, 1.4, 1.9), 2.0, Vec3(0.05, -0.03, 0.02)),
+      QuadraticField::coulomb(1.0, 1.2)};
   const Eigen::VectorXd p = secular_polynomial(model);
   ASSERT_EQ(p.size(), 7);
   EXPECT_EQ(p[6], -1.0);
@@ -184,11 +187,12 @@ TEST(Equilibria, CompanionRootsOfKnownPolynomial) {
 
 TEST(Equilibria, UniformGravityWithoutOffsetIsEveryOrientation) {
   const Body body = Body::from_principal(Vec3(1.0, 1.5, 2.0), 1.0, Vec3::Zero());
-  EXPECT_TRUE(find_equilibria(Model{body, QuadraticField::uniform(9.81)}).every_orientation);
+  EXPECT_TRUE(
+      find_equilibria(QuadraticModel{body, QuadraticField::uniform(9.81)}).every_orientation);
   // With an offset: the heavy top hangs (minimum, γ = −r0/|r0|) or stands (maximum).
   const Vec3 r0(0.1, 0.2, -0.3);
-  const EquilibriumSet set = find_equilibria(
-      Model{Body::from_principal(Vec3(1.0, 1.5, 2.0), 1.0, r0), QuadraticField::uniform(9.81)});
+  const EquilibriumSet set = find_equilibria(QuadraticModel{
+      Body::from_principal(Vec3(1.0, 1.5, 2.0), 1.0, r0), QuadraticField::uniform(9.81)});
   ASSERT_EQ(set.equilibria.size(), 2u);
   EXPECT_EQ(set.equilibria[0].type, EquilibriumType::minimum);
   EXPECT_LE((set.equilibria[0].gamma + r0.normalized()).norm(), kResidual);
@@ -200,8 +204,8 @@ TEST(Equilibria, SymmetricBodyWithAxialOffsetHasACircle) {
   // A = B, r0 on the axis: ±e_z and, where |M g z0 / (λ(A − C))| < 1, a circle with
   // γ_z = M g z0 / (λ(A − C)) (κ = λA, spec §7 degenerate case with two free components).
   const double A = 2.0, C = 1.0, z0 = 0.3, lambda = 1.0;
-  const Model model{Body::from_principal(Vec3(A, A, C), 1.0, Vec3(0, 0, z0)),
-                    QuadraticField::coulomb(1.0, lambda)};
+  const QuadraticModel model{Body::from_principal(Vec3(A, A, C), 1.0, Vec3(0, 0, z0)),
+                             QuadraticField::coulomb(1.0, lambda)};
   const EquilibriumSet set = find_equilibria(model);
   ASSERT_EQ(set.equilibria.size(), 2u);
   ASSERT_EQ(set.circles.size(), 1u);

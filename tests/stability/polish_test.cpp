@@ -39,14 +39,14 @@ Vec3 rounded(const Vec3& x, int digits) {
   return r;
 }
 
-Model model_with(const Vec3& I, const Vec3& r0, double lambda) {
-  return Model{Body::from_principal(I, 1.0, r0), QuadraticField::coulomb(1.0, lambda)};
+QuadraticModel model_with(const Vec3& I, const Vec3& r0, double lambda) {
+  return QuadraticModel{Body::from_principal(I, 1.0, r0), QuadraticField::coulomb(1.0, lambda)};
 }
 
 TEST(PolishFixedPoint, SevenDigitEquilibriaReturnToRoundOff) {
   // Every equilibrium of a body with r0 off every axis, copied to 7 digits: a residual ~1e-7
   // (above kFixedPointTolerance), polished to round-off at rest, onto the listed equilibrium.
-  const Model m = model_with(Vec3(1.0, 1.6, 2.1), Vec3(0.05, -0.03, 0.02), 1.0);
+  const QuadraticModel m = model_with(Vec3(1.0, 1.6, 2.1), Vec3(0.05, -0.03, 0.02), 1.0);
   const EquilibriumSet set = find_equilibria(m);
   ASSERT_EQ(set.equilibria.size(), 6u);
   for (const Equilibrium& e : set.equilibria) {
@@ -66,7 +66,7 @@ TEST(PolishFixedPoint, SevenDigitEquilibriaReturnToRoundOff) {
 TEST(PolishFixedPoint, SpinAboutAPrincipalAxisKeepsItsRate) {
   // The spin of stability_beletsky.toml with γ and ω pushed by 1e-6: the nearest fixed point is
   // the spin about e_z, and Ω moves by no more than the push (the family is Ω itself).
-  const Model m = model_with(Vec3(1.0, 1.5, 2.2), Vec3::Zero(), 1.0);
+  const QuadraticModel m = model_with(Vec3(1.0, 1.5, 2.2), Vec3::Zero(), 1.0);
   const State exact = principal_spin(m.body, 2, 1.2);
   const State pushed =
       state_from_omega(m.body, Vec3(2e-6, -1e-6, 1.2 + 1e-6), Vec3(1e-6, 3e-7, 1.0));
@@ -81,7 +81,7 @@ TEST(PolishFixedPoint, SpinAboutAPrincipalAxisKeepsItsRate) {
 
 TEST(PolishFixedPoint, StaudeConeRotationReturnsToTheCone) {
   // A permanent rotation about an axis of the Staude cone (r0 ≠ 0), copied to 8 digits.
-  const Model m = model_with(Vec3(1.0, 1.6, 2.1), Vec3(0.3, -0.2, 0.25), 1.0);
+  const QuadraticModel m = model_with(Vec3(1.0, 1.6, 2.1), Vec3(0.3, -0.2, 0.25), 1.0);
   const RotationFamilies f = permanent_rotations(m, 24);
   int checked = 0;
   for (const ConeAxis& c : f.cone) {
@@ -101,7 +101,7 @@ TEST(PolishFixedPoint, StaudeConeRotationReturnsToTheCone) {
 }
 
 TEST(PolishFixedPoint, GyrostatAtRestStaysAtRest) {
-  const Model m{
+  const QuadraticModel m{
       Body::from_principal(Vec3(1.0, 1.6, 2.1), 1.0, Vec3(0.2, -0.1, 0.15), Vec3(0.0, 0.0, 0.4)),
       QuadraticField::coulomb(1.0, 1.0)};
   const Equilibrium e = find_equilibria(m).equilibria.front();
@@ -114,7 +114,7 @@ TEST(PolishFixedPoint, GyrostatAtRestStaysAtRest) {
 
 TEST(PolishFixedPoint, RefusesAStateFarFromEveryFixedPoint) {
   // A tumbling state: Newton moves it by far more than kPolishRadius, or does not converge.
-  const Model m = model_with(Vec3(1.0, 1.6, 2.1), Vec3(0.2, -0.1, 0.15), 1.0);
+  const QuadraticModel m = model_with(Vec3(1.0, 1.6, 2.1), Vec3(0.2, -0.1, 0.15), 1.0);
   const State s = state_from_omega(m.body, Vec3(0.1, 0.2, 0.3), Vec3(0.6, 0.0, 0.8));
   const PolishedFixedPoint p = polish_fixed_point(m, s);
   EXPECT_FALSE(p.converged);

@@ -23,8 +23,9 @@ constexpr double kThresholdTolerance = 1e-9;
 // of |J| (~ a few units here), even where eigenvalues are close.
 constexpr double kCoefficientTolerance = 1e3 * kEps;
 
-Model brun(const Vec3& I, double lambda) {
-  return Model{Body::from_principal(I, 1.0, Vec3::Zero()), QuadraticField::coulomb(1.0, lambda)};
+QuadraticModel brun(const Vec3& I, double lambda) {
+  return QuadraticModel{Body::from_principal(I, 1.0, Vec3::Zero()),
+                        QuadraticField::coulomb(1.0, lambda)};
 }
 
 /// Coefficients (constant term first, monic) of Π (s − s_i) over the leaf eigenvalues.
@@ -42,7 +43,7 @@ TEST(Beletsky, NumericThresholdMatchesFormulaWhenSpinAxisIsLargest) {
   for (const Vec3& I : {Vec3(1.0, 2.0, 2.5), Vec3(2.0, 3.0, 4.0), Vec3(1.0, 1.5, 2.2),
                         Vec3(3.0, 3.5, 3.8), Vec3(1.0, 1.0, 1.9)}) {
     for (double lambda : {1.0, 2.5}) {
-      const Model model = brun(I, lambda);
+      const QuadraticModel model = brun(I, lambda);
       ASSERT_EQ(axis_class(model.body, 2), AxisClass::largest);
       const std::optional<double> formula = beletsky_threshold(model.body, lambda, 2);
       const std::optional<double> numeric = numeric_threshold(model, 2);
@@ -51,13 +52,13 @@ TEST(Beletsky, NumericThresholdMatchesFormulaWhenSpinAxisIsLargest) {
     }
   }
   // The same with the spin along x: the axis of the largest moment relabelled as C.
-  const Model model = brun(Vec3(2.5, 1.0, 2.0), 1.0);
+  const QuadraticModel model = brun(Vec3(2.5, 1.0, 2.0), 1.0);
   EXPECT_NEAR(*numeric_threshold(model, 0), *beletsky_threshold(model.body, 1.0, 0),
               kThresholdTolerance);
 }
 
 TEST(Beletsky, LeastMomentAxisIsStableAtEveryOmega) {
-  const Model model = brun(Vec3(2.0, 2.6, 1.2), 1.3);
+  const QuadraticModel model = brun(Vec3(2.0, 2.6, 1.2), 1.3);
   ASSERT_EQ(axis_class(model.body, 2), AxisClass::least);
   for (const auto& p : scan_omega(model, 2, 0.0, 6.0, 241)) {
     EXPECT_TRUE(p.linearly_stable) << "Omega " << p.omega << " max Re " << p.max_real_part;
@@ -69,7 +70,7 @@ TEST(Beletsky, LeastMomentAxisIsStableAtEveryOmega) {
 
 TEST(Beletsky, MiddleMomentAxisIsUnstableExceptAtRootLambda) {
   for (double lambda : {1.0, 4.0}) {  // √λ exact in binary
-    const Model model = brun(Vec3(1.0, 2.2, 1.6), lambda);
+    const QuadraticModel model = brun(Vec3(1.0, 2.2, 1.6), lambda);
     ASSERT_EQ(axis_class(model.body, 2), AxisClass::middle);
     for (const auto& p : scan_omega(model, 2, 0.0, 6.0, 240)) {
       if (p.omega == std::sqrt(lambda)) continue;
@@ -87,7 +88,7 @@ TEST(Beletsky, MiddleMomentAxisIsUnstableExceptAtRootLambda) {
 TEST(Beletsky, LeafSpectrumSolvesTheQuadraticInSigma) {
   // s² = σ where σ² − [(a + b)λ − (1 + ab)Ω²] σ + ab(λ − Ω²)² = 0: the monic quartic in s is
   // s⁴ + p1 s² + p0 with (p1, p0) the quadratic's coefficients.
-  const Model model = brun(Vec3(1.0, 1.7, 2.3), 1.4);
+  const QuadraticModel model = brun(Vec3(1.0, 1.7, 2.3), 1.4);
   for (double w : {0.0, 0.3, 0.9, 1.7, 3.1}) {
     const Eigen::Vector3d q = beletsky_polynomial(model.body, 1.4, 2, w);
     const Eigen::VectorXd c = characteristic(spin_stability(model, 2, w));
@@ -105,8 +106,8 @@ TEST(SpinStability, CharacteristicPolynomialWithCentreOfMassOnTheAxis) {
   // of λ and of z0 (the heavy sleeping top is λ = 0).
   for (double lambda : {1.2, 0.0, -0.8}) {
     for (double z0 : {0.4, -0.25}) {
-      const Model model{Body::from_principal(Vec3(1.3, 1.8, 2.4), 1.5, Vec3(0, 0, z0)),
-                        QuadraticField::coulomb(0.9, lambda)};
+      const QuadraticModel model{Body::from_principal(Vec3(1.3, 1.8, 2.4), 1.5, Vec3(0, 0, z0)),
+                                 QuadraticField::coulomb(0.9, lambda)};
       for (double w : {0.0, 0.8, 2.1}) {
         const Eigen::Matrix<double, 5, 1> p = axis_spin_polynomial(model, 2, w);
         const Eigen::VectorXd c = characteristic(spin_stability(model, 2, w));
@@ -122,8 +123,8 @@ TEST(SpinStability, CharacteristicPolynomialWithCentreOfMassOnTheAxis) {
 
 TEST(SpinStability, LeafReductionDiscardsExactlyTheTwoCasimirZeros) {
   // The six eigenvalues of the full Jacobian are the four on the leaf plus two zeros.
-  const Model model{Body::from_principal(Vec3(1.3, 1.8, 2.4), 1.0, Vec3(0, 0, 0.3)),
-                    QuadraticField::coulomb(1.0, 1.0)};
+  const QuadraticModel model{Body::from_principal(Vec3(1.3, 1.8, 2.4), 1.0, Vec3(0, 0, 0.3)),
+                             QuadraticField::coulomb(1.0, 1.0)};
   const State s = principal_spin(model.body, 2, 1.7);
   const Eigen::VectorXcd full = Eigen::EigenSolver<Mat6>(jacobian(model, s), false).eigenvalues();
   const Spectrum leaf = linear_stability(model, s);
@@ -168,7 +169,7 @@ TEST(SpinStability, EnergyCasimirVerdictMatchesTheSecondVariationByHand) {
   // blocks are positive definite: (C − A)(Ω² − λ) > 0 and (C − B)(Ω² − λ) > 0.
   const double lambda = 1.0;
   for (const Vec3& I : {Vec3(1.0, 1.5, 2.2), Vec3(2.0, 2.6, 1.2)}) {
-    const Model model = brun(I, lambda);
+    const QuadraticModel model = brun(I, lambda);
     for (double w : {0.0, 0.3, 0.7, 0.995, 1.2, 1.5, 2.0, 3.0, 6.0}) {
       const Eigen::Vector4d h = Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d>(
                                     energy_casimir_hessian(model, principal_spin(model.body, 2, w)))

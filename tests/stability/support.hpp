@@ -37,7 +37,7 @@ inline constexpr double kTrajectoryStep = 0.01;
 
 /// Largest distance of the trajectory from x0 over [0, T] (max norm over m and γ), sampled at every
 /// step of the 6th-order Lie–Poisson splitting, an integrator independent of the linear analysis.
-inline double max_departure(const Model& model, const State& x0, double T) {
+inline double max_departure(const QuadraticModel& model, const State& x0, double T) {
   double d = 0.0;
   SplittingStepper stepper(composition_table("splitting6"));
   const Outcome out =

@@ -17,8 +17,8 @@ struct EnergyErrorProfile {
 };
 
 template <class Stepper>
-EnergyErrorProfile energy_error_profile(Stepper stepper, const Model& model, State x, double h,
-                                        int steps) {
+EnergyErrorProfile energy_error_profile(Stepper stepper, const QuadraticModel& model, State x,
+                                        double h, int steps) {
   const double e0 = energy(model, x);
   EnergyErrorProfile p;
   for (int i = 0; i < steps; ++i) {

@@ -12,19 +12,19 @@ inline constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 /// A generic (non-integrable, chaotic) model: distinct moments, centre of mass off every axis,
 /// Newtonian λ > 0 and a gyrostat. Time scales are O(1).
-inline Model generic_model(Vec3 k = Vec3::Zero()) {
-  return Model{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3(0.3, 0.2, 0.1), k),
-               QuadraticField::coulomb(1.0, 0.5)};
+inline QuadraticModel generic_model(Vec3 k = Vec3::Zero()) {
+  return QuadraticModel{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3(0.3, 0.2, 0.1), k),
+                        QuadraticField::coulomb(1.0, 0.5)};
 }
 
-inline State generic_state(const Model& m) {
+inline State generic_state(const QuadraticModel& m) {
   return state_from_omega(m.body, Vec3(0.5, 1.1, -0.4), Vec3(0.48, -0.6, 0.64));
 }
 
 /// Brun's case: r0 = 0, k = 0, λ < 0 (Brun's N = 0.8).
-inline Model brun_model() {
-  return Model{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3::Zero()),
-               QuadraticField::brun(0.8)};
+inline QuadraticModel brun_model() {
+  return QuadraticModel{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3::Zero()),
+                        QuadraticField::brun(0.8)};
 }
 
 /// Max-norm distance between two states.
@@ -33,7 +33,8 @@ inline double distance(const State& a, const State& b) {
 }
 
 /// Reference solution by Fehlberg 7(8) at a tolerance near round-off.
-inline State reference_solution(const Model& model, const State& x0, double T, double tol = 1e-14) {
+inline State reference_solution(const QuadraticModel& model, const State& x0, double T,
+                                double tol = 1e-14) {
   Fehlberg78Stepper s(tol, tol);
   return integrate(s, model, x0, 0.0, T, IntegrateOptions{}).state;
 }

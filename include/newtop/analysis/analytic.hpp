@@ -23,13 +23,13 @@ struct AnalyticDetection {
 };
 
 /// The first case that applies, in the order Euler–Poinsot, plane pendulum, Lagrange, Brun.
-AnalyticDetection detect_analytic_case(const Model& model, const State& x0);
+AnalyticDetection detect_analytic_case(const QuadraticModel& model, const State& x0);
 
 using AnalyticSolution = std::variant<EulerPoinsot, Pendulum, LagrangeCase, BrunCase>;
 
 /// The solution of a solved case (euler_poinsot, pendulum, lagrange, brun on f = 0); throws
 /// InputError for none or an unsolved level.
-AnalyticSolution analytic_solution(const Model& model, const State& x0, AnalyticKind kind);
+AnalyticSolution analytic_solution(const QuadraticModel& model, const State& x0, AnalyticKind kind);
 
 /// The state at time t.
 State analytic_state(const AnalyticSolution& s, double t);

@@ -42,7 +42,7 @@ struct BrunCase {
 };
 
 /// The solution from x0 (throws InputError as brun_curve does).
-BrunCase brun_case(const Model& model, const State& x0);
+BrunCase brun_case(const QuadraticModel& model, const State& x0);
 
 /// A_s^(n)(φ) for any real φ (whole periods plus a Gauss–Kronrod remainder).
 double brun_abel_integral(const BrunCase& b, int s, int n, double phi);

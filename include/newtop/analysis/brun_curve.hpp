@@ -14,7 +14,7 @@
 
 #include <array>
 
-#include "newtop/model/model.hpp"
+#include "newtop/model/basic_model.hpp"
 
 namespace newtop {
 
@@ -48,12 +48,12 @@ State from_working_frame(const BrunCurve& k, const State& s);
 /// −P N of the level through x0, on any level f (the ranges are left unset: they belong to
 /// f = 0). Throws InputError unless Brun's case holds, λ ≠ 0, the moments are distinct and
 /// |γ| = 1.
-BrunCurve brun_level(const Model& model, const State& x0);
+BrunCurve brun_level(const QuadraticModel& model, const State& x0);
 
 /// The curve and ranges of the level through x0. Throws InputError unless Brun's case holds
 /// (brun_holds), λ ≠ 0, the moments are distinct, |γ| = 1 and m·γ = 0 (to 1e-12 relative): the
 /// level f ≠ 0 needs Kötter's separation, which is not implemented.
-BrunCurve brun_curve(const Model& model, const State& x0);
+BrunCurve brun_curve(const QuadraticModel& model, const State& x0);
 
 /// N(u) and R(u) = −P(u) N(u).
 double brun_N(const BrunCurve& k, double u);
@@ -64,6 +64,6 @@ double brun_R(const BrunCurve& k, double u);
 double brun_reduced_R(const BrunCurve& k, int s, double u);
 
 /// True when the level f = m·γ vanishes to the tolerance used by brun_curve.
-bool brun_level_solvable(const Model& model, const State& x0);
+bool brun_level_solvable(const QuadraticModel& model, const State& x0);
 
 }  // namespace newtop

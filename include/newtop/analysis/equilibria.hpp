@@ -8,9 +8,11 @@
 
 #include <vector>
 
-#include "newtop/model/model.hpp"
+#include "newtop/model/basic_model.hpp"
 
 namespace newtop {
+
+class Model;  // newtop/model/model.hpp
 
 /// Type of a critical point of V on the unit sphere, from the Hessian of V restricted to the
 /// tangent plane (λ I − κ E projected on γ⊥).
@@ -66,7 +68,7 @@ inline constexpr double kEquilibriumDegeneracy = 1e-12;
 /// P(κ) = Σ_g β_g Π_{h≠g} (κ − d_h)² − Π_h (κ − d_h)², over the distinct values d_g of λ I_i whose
 /// components of b = M g r0 are not all zero, with β_g = Σ_{i: d_i = d_g} b_i². Degree 2·(number
 /// of such groups) ≤ 6; leading coefficient −1.
-Eigen::VectorXd secular_polynomial(const Model& model);
+Eigen::VectorXd secular_polynomial(const QuadraticModel& model);
 
 /// Real roots of a polynomial (coefficients constant term first, leading one non-zero) from the
 /// eigenvalues of its companion matrix; roots whose imaginary part exceeds `imag_tolerance` times
@@ -76,15 +78,37 @@ std::vector<double> real_polynomial_roots(const Eigen::VectorXd& coefficients,
 
 /// Hessian of V restricted to the unit sphere at a critical point γ with multiplier κ, in an
 /// orthonormal basis of γ⊥: Tᵀ (λ I − κ E) T.
-Eigen::Matrix2d sphere_hessian(const Model& model, const Vec3& gamma, double kappa);
+Eigen::Matrix2d sphere_hessian(const QuadraticModel& model, const Vec3& gamma, double kappa);
 
 /// Builds the Equilibrium record at a critical point γ (classifies it from sphere_hessian).
-Equilibrium make_equilibrium(const Model& model, const Vec3& gamma);
+Equilibrium make_equilibrium(const QuadraticModel& model, const Vec3& gamma);
 
 /// Every equilibrium of the model (spec §7): the roots of the secular polynomial (companion-matrix
 /// eigenvalues polished by Newton's method on Σ β_g/(κ − d_g)² = 1), the degenerate solutions
 /// κ = λ I_i where b_i = 0, circles of equilibria for symmetric bodies, and the case where V is
 /// constant. Requires k-independent input only (the gyrostat plays no role at rest).
+EquilibriumSet find_equilibria(const QuadraticModel& model);
+
+/// Fibonacci-lattice starts of the search on the sphere.
+inline constexpr int kSphereStarts = 400;
+
+/// n nearly uniform points on the unit sphere (Fibonacci lattice).
+std::vector<Vec3> fibonacci_sphere(int n);
+
+/// Hessian of V restricted to the unit sphere at a critical point γ of any field, in an
+/// orthonormal basis of γ⊥, from the field's moment Jacobian ∂L/∂γ (no cancellation far away).
+Eigen::Matrix2d sphere_hessian(const Model& model, const Vec3& gamma);
+
+/// The critical points of V on the sphere reached from `starts` by Levenberg–Marquardt on the
+/// moment L(γ) = 0 (tangent steps, renormalised), deduplicated, typed from sphere_hessian and
+/// sorted by increasing κ = γ·∂V/∂γ (as find_equilibria). `staude_residual` is NaN (the Staude cone
+/// is the quadratic field's). Every orientation is an equilibrium when L vanishes at every start.
+EquilibriumSet sphere_equilibria(const Model& model, const std::vector<Vec3>& starts);
+
+/// Every equilibrium of a model in its own field: find_equilibria(QuadraticModel) for the
+/// quadratic field; otherwise sphere_equilibria from the quadratic model's equilibria (and points
+/// of its circles) plus kSphereStarts lattice points. The count rule (minima − saddles + maxima =
+/// 2 when all are non-degenerate) checks that none was missed.
 EquilibriumSet find_equilibria(const Model& model);
 
 }  // namespace newtop

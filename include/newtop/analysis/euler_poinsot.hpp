@@ -9,6 +9,6 @@
 namespace newtop {
 
 /// True when the model is a free body: no torque (λ = 0 and M g r0 = 0) and no gyrostat (k = 0).
-bool euler_poinsot_holds(const Model& model);
+bool euler_poinsot_holds(const QuadraticModel& model);
 
 }  // namespace newtop

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "newtop/model/model.hpp"
+#include "newtop/model/basic_model.hpp"
 
 namespace newtop {
 
@@ -73,7 +73,7 @@ struct IntegralSearch {
 
 /// Search for the quadratic-field model (recognises energy, area, geometric, brun, lagrange and
 /// products of them). Throws InputError for a degree outside 1..6.
-IntegralSearch find_integrals(const Model& model, const SearchOptions& options = {});
+IntegralSearch find_integrals(const QuadraticModel& model, const SearchOptions& options = {});
 /// Search for a polynomial potential (recognises energy, area, geometric, lagrange and products).
 IntegralSearch find_integrals(const BasicModel<PolynomialPotential>& model,
                               const SearchOptions& options = {});

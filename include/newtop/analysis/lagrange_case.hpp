@@ -14,7 +14,7 @@
 #include <array>
 #include <vector>
 
-#include "newtop/model/model.hpp"
+#include "newtop/model/basic_model.hpp"
 
 namespace newtop {
 
@@ -49,13 +49,13 @@ struct LagrangeCase {
 };
 
 /// True when the Lagrange-like case applies (the conditions of spec §5: lagrange_holds).
-bool lagrange_case_holds(const Model& model);
+bool lagrange_case_holds(const QuadraticModel& model);
 
 /// The quartic of spec §6 for the model and state.
-LagrangeQuartic lagrange_quartic(const Model& model, const State& x0);
+LagrangeQuartic lagrange_quartic(const QuadraticModel& model, const State& x0);
 
 /// The solution from x0. Throws InputError when the case does not apply or x0 is not a unit γ.
-LagrangeCase lagrange_case(const Model& model, const State& x0);
+LagrangeCase lagrange_case(const QuadraticModel& model, const State& x0);
 
 /// γ3(t) and γ̇3(t), the elliptic function.
 std::array<double, 2> lagrange_gamma3(const LagrangeCase& s, double t);

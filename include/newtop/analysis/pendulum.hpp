@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "newtop/model/model.hpp"
+#include "newtop/model/basic_model.hpp"
 
 namespace newtop {
 
@@ -44,10 +44,10 @@ double pendulum_potential(const Pendulum& p, double phi);
 
 /// True when the plane motion applies to (model, x0): Mg z0 = 0, k1 = k2 = 0 and p = q = γ3 = 0 at
 /// the start (to 1e-12). `why` receives the failed condition.
-bool pendulum_holds(const Model& model, const State& x0, std::string* why = nullptr);
+bool pendulum_holds(const QuadraticModel& model, const State& x0, std::string* why = nullptr);
 
 /// The solution from x0; throws InputError if pendulum_holds is false.
-Pendulum pendulum(const Model& model, const State& x0);
+Pendulum pendulum(const QuadraticModel& model, const State& x0);
 
 /// φ(t) and r(t) = φ̇(t).
 std::array<double, 2> pendulum_angle(const Pendulum& p, double t);

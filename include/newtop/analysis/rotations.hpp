@@ -6,9 +6,11 @@
 #include <optional>
 #include <vector>
 
-#include "newtop/model/model.hpp"
+#include "newtop/model/basic_model.hpp"
 
 namespace newtop {
+
+class Model;  // newtop/model/model.hpp
 
 /// The state of the uniform rotation with angular velocity ω = Ω γ about the unit axis γ.
 inline State permanent_rotation(const Body& body, const Vec3& gamma, double Omega) {
@@ -20,7 +22,7 @@ double staude_cone(const Body& body, const Vec3& gamma);
 
 /// Ω² along an axis γ of the Staude cone that is not a principal axis (spec §8):
 /// Ω² = λ + M g (γ × r0)·(γ × Iγ) / |γ × Iγ|². NaN where γ × Iγ = 0 (a principal axis).
-double cone_omega_squared(const Model& model, const Vec3& gamma);
+double cone_omega_squared(const QuadraticModel& model, const Vec3& gamma);
 
 /// One sampled axis of the cone with its Ω²; admissible when Ω² ≥ 0 (either sense of rotation).
 struct ConeAxis {
@@ -55,6 +57,12 @@ inline constexpr int kMaxRotationSamples = 100000;
 /// γ(τ) ∝ (I − τE)⁻¹ r0 for τ ∈ ℝ (each τ a generator, τ → ±∞ gives r0 itself), plus the extra
 /// plane spanned by e_i and (I − I_i E)⁻¹ r0 where x0_i = 0. Throws InputError for a body with a
 /// rotor (k ≠ 0), whose rotations are outside spec §8.
+RotationFamilies permanent_rotations(const QuadraticModel& model, int samples);
+
+/// The permanent rotations in the model's own field: permanent_rotations(QuadraticModel) for the
+/// quadratic field; otherwise (k = 0) the axes where L(γ) = Ω² γ × Iγ, i.e. the curve
+/// γ·(L × (γ × Iγ)) = 0 found by bisection along 2·samples meridians (each in 2·samples arcs),
+/// in `cone` with Ω² = L·(γ × Iγ)/|γ × Iγ|², and the principal axes where L = 0 (any Ω).
 RotationFamilies permanent_rotations(const Model& model, int samples);
 
 }  // namespace newtop

@@ -16,7 +16,9 @@ using Mat6 = Eigen::Matrix<double, 6, 6>;
 using LeafBasis = Eigen::Matrix<double, 6, 4>;
 
 /// Jacobian of rhs(model, ·) with respect to x = (m, γ) (spec §4):
-/// [[ [m]× I⁻¹ − [ω]×,  [γ]× λI − [∂V/∂γ]× ], [ [γ]× I⁻¹,  −[ω]× ]], with [a]× v = a × v.
+/// [[ [m]× I⁻¹ − [ω]×,  ∂L/∂γ ], [ [γ]× I⁻¹,  −[ω]× ]], with [a]× v = a × v and ∂L/∂γ =
+/// [γ]× ∂²V/∂γ² − [∂V/∂γ]× the moment Jacobian of the model's own field (λI for ∂²V/∂γ² in the
+/// quadratic field).
 Mat6 jacobian(const Model& model, const State& s);
 
 /// Orthonormal basis of the tangent space of the symplectic leaf through s: the vectors δx with

@@ -36,20 +36,21 @@ std::optional<double> beletsky_threshold(const Body& body, double lambda, int ax
 
 /// Coefficients (c, 0, β, 0, AB) (constant term first) of the quartic AB s⁴ + β s² + c of spec §9,
 /// the characteristic polynomial on the leaf with r0 = z0 e_z (spin frame), k_z = M g z0.
-Eigen::Matrix<double, 5, 1> axis_spin_polynomial(const Model& model, int axis, double Omega);
+Eigen::Matrix<double, 5, 1> axis_spin_polynomial(const QuadraticModel& model, int axis,
+                                                 double Omega);
 
 /// Spectral verdict of the spin at one Ω (the spin must be a fixed point).
-Spectrum spin_stability(const Model& model, int axis, double Omega);
+Spectrum spin_stability(const QuadraticModel& model, int axis, double Omega);
 
 /// Upper end of the Ω range searched by numeric_threshold: 8 (√(|λ| max I / min I) +
 /// √(|M g r0| max I) / min I), above every threshold of spec §9 (Ω* ≤ 2√λ; the sleeping top's
 /// 2√(A M g z0)/C).
-double spin_omega_range(const Model& model);
+double spin_omega_range(const QuadraticModel& model);
 
 /// Ω ≥ 0 above which the spin stays linearly stable up to spin_omega_range: found by sampling
 /// `samples` points and bisecting the last unstable → stable change to round-off. nullopt when the
 /// spin is stable everywhere or still unstable at the end of the range.
-std::optional<double> numeric_threshold(const Model& model, int axis, int samples = 200);
+std::optional<double> numeric_threshold(const QuadraticModel& model, int axis, int samples = 200);
 
 /// One point of a stability diagram.
 struct ScanPoint {
@@ -65,6 +66,7 @@ inline constexpr int kMaxScanPoints = 100000;
 
 /// Stability along Ω ∈ [w1, w2] at n ≥ 2 equally spaced points (n = 1: w1 only), n ≤
 /// kMaxScanPoints; throws InputError otherwise or for a non-finite end.
-std::vector<ScanPoint> scan_omega(const Model& model, int axis, double w1, double w2, int n);
+std::vector<ScanPoint> scan_omega(const QuadraticModel& model, int axis, double w1, double w2,
+                                  int n);
 
 }  // namespace newtop

@@ -9,7 +9,7 @@
 
 #include "newtop/exact/attraction.hpp"
 #include "newtop/exact/mass_models.hpp"
-#include "newtop/model/model.hpp"
+#include "newtop/model/basic_model.hpp"
 
 namespace newtop {
 

@@ -4,7 +4,7 @@
 
 #include <concepts>
 
-#include "newtop/model/model.hpp"
+#include "newtop/model/basic_model.hpp"
 
 namespace newtop {
 

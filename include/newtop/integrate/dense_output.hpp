@@ -8,7 +8,7 @@
 #include <concepts>
 #include <span>
 
-#include "newtop/model/model.hpp"
+#include "newtop/model/basic_model.hpp"
 
 namespace newtop {
 

@@ -8,7 +8,7 @@
 
 #include "newtop/integrate/composition_tables.hpp"
 #include "newtop/integrate/splitting.hpp"
-#include "newtop/model/model.hpp"
+#include "newtop/model/basic_model.hpp"
 
 namespace newtop {
 

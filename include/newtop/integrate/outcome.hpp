@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "newtop/model/model.hpp"
+#include "newtop/model/basic_model.hpp"
 
 namespace newtop {
 

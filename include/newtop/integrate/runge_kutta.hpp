@@ -29,7 +29,7 @@
 
 #include "newtop/integrate/concepts.hpp"
 #include "newtop/integrate/dense_output.hpp"
-#include "newtop/model/model.hpp"
+#include "newtop/model/basic_model.hpp"
 
 namespace newtop {
 

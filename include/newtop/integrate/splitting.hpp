@@ -15,7 +15,7 @@
 
 #include "newtop/integrate/composition_tables.hpp"
 #include "newtop/integrate/sub_flows.hpp"
-#include "newtop/model/model.hpp"
+#include "newtop/model/basic_model.hpp"
 
 namespace newtop {
 

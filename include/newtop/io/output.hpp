@@ -48,7 +48,8 @@ class AtomicFile {
 void remove_open_temporaries() noexcept;
 
 /// CSV trajectory: `t,p,q,r,gamma1,gamma2,gamma3,energy,area,geometric[,brun][,lagrange]`,
-/// numbers in shortest round-trip form.
+/// numbers in shortest round-trip form; the integrals are those of the model's own field
+/// (integrals(Model, s)), brun and lagrange only where they hold.
 class CsvTrajectory {
  public:
   CsvTrajectory(std::ostream& out, const Model& model);
@@ -57,7 +58,7 @@ class CsvTrajectory {
  private:
   std::ostream& out_;
   const Model& model_;
-  bool brun_, lagrange_;
+  bool brun_ = false, lagrange_ = false;
   std::string line_;
 };
 

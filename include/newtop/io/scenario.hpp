@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-#include "newtop/exact/mass_models.hpp"
 #include "newtop/integrate/methods.hpp"
 #include "newtop/model/model.hpp"
 
@@ -31,28 +30,16 @@ struct OutputSection {
   std::optional<double> dt;
 };
 
-/// Which field a run uses: the quadratic model of spec §3, the exact field of spec §2, or its
-/// multipole expansion to `order` (terms through 1/R^order).
-enum class FieldKind { quadratic, exact, multipole };
-
-/// [mass_model] and the exact-field settings of [field] (kind = "exact" | "multipole", mu, R,
-/// order). With a mass model the body is derived from it (principal axes as for inertia_tensor).
-struct ExactSettings {
-  std::shared_ptr<const MassModel> mass_model;  ///< null when the file has no [mass_model]
-  FieldKind kind = FieldKind::quadratic;
-  double mu = 0.0, R = 0.0;
-  int order = 0;
-};
-
 /// A parsed and validated scenario. Vectors are in the body's principal axes (converted from the
 /// user's frame when the body was given by a full inertia tensor).
 struct Scenario {
   std::string source;  ///< file name used in messages
+  /// The model of the run: its body and its field (quadratic, exact or multipole); with a
+  /// [mass_model], the body is the mass model's (principal axes as for inertia_tensor).
   Model model;
   State initial;
   IntegrateSection integrate;
   OutputSection output;
-  ExactSettings exact;  ///< model.field is the quadratic field of the same μ and R
   /// Every file the scenario was read from: the scenario itself and a [mass_model] file (an output
   /// must never replace one of them).
   std::vector<std::string> input_files;

@@ -25,11 +25,11 @@ inline double geometric(const State& s) { return s.gamma.squaredNorm(); }
 
 /// Brun's integral (spec §5), I4 = |Iω|² − λ ABC γ·I⁻¹γ
 ///   = A²p² + B²q² + C²r² − λ(BC γ1² + CA γ2² + AB γ3²); conserved when r0 = 0 and k = 0.
-double brun(const Model& model, const State& s);
+double brun(const QuadraticModel& model, const State& s);
 
 /// Lagrange's integral (spec §5), I4 = C r + k3 = m3; conserved when A = B, x0 = y0 = 0 and
 /// k = (0, 0, k3).
-double lagrange(const Model& model, const State& s);
+double lagrange(const QuadraticModel& model, const State& s);
 
 /// Relative tolerance with which the conditions of spec §5 (A = B, x0 = y0 = 0, k1 = k2 = 0, r0 =
 /// 0) are recognised: parameters written in a file to 15 digits and converted to binary must still
@@ -37,13 +37,13 @@ double lagrange(const Model& model, const State& s);
 inline constexpr double kConditionTolerance = 1e-12;
 
 /// True when Brun's integral holds for the model: M g r0 = 0 (no linear term) and k = 0.
-bool brun_holds(const Model& model);
+bool brun_holds(const QuadraticModel& model);
 /// True when Lagrange's integral holds: A = B, M g x0 = M g y0 = 0 and k1 = k2 = 0.
-bool lagrange_holds(const Model& model);
+bool lagrange_holds(const QuadraticModel& model);
 
 /// Names of the integrals conserved by this model, in the order energy, area, geometric, brun,
 /// lagrange.
-std::vector<std::string> conserved_integrals(const Model& model);
+std::vector<std::string> conserved_integrals(const QuadraticModel& model);
 
 /// The value of each integral at a state, where it holds (std::nullopt otherwise).
 struct IntegralValues {
@@ -55,7 +55,7 @@ struct IntegralValues {
 };
 
 /// All integrals of spec §5 at s; brun and lagrange filled only where they hold.
-IntegralValues integrals(const Model& model, const State& s);
+IntegralValues integrals(const QuadraticModel& model, const State& s);
 
 /// Integrals for any field: energy, area and geometric (the extra integrals need the quadratic
 /// field).
@@ -63,5 +63,16 @@ template <Field F>
 IntegralValues integrals(const BasicModel<F>& model, const State& s) {
   return {energy(model, s), area(s), geometric(s), std::nullopt, std::nullopt};
 }
+
+/// The energy of the model's own field: ½ ω·Iω + V(γ) with that field's V.
+double energy(const Model& model, const State& s);
+
+/// The integrals of the model's own field: energy, area and geometric for every field; Brun's and
+/// Lagrange's only for the quadratic field, where they hold (in an exact or multipole field
+/// neither holds in general).
+IntegralValues integrals(const Model& model, const State& s);
+
+/// The names of the integrals conserved in the model's own field (as integrals(Model, s) fills).
+std::vector<std::string> conserved_integrals(const Model& model);
 
 }  // namespace newtop

@@ -1,86 +1,89 @@
 #pragma once
 /// \file
-/// Model (body + field) and State (m, γ) of the Euler–Poisson equations (spec §4).
+/// Model: the body and the field of a run, whatever the field (spec §2–§4). The field is a value
+/// that is any of the quadratic field of spec §3, the exact field of a mass model (spec §2) or its
+/// multipole expansion; the body of an exact or multipole field is always the mass model's own
+/// (one source of mass properties). The steppers and kernels run on the concrete BasicModel<F>
+/// that visit_model() hands them, so their loops stay monomorphic.
 
-#include <concepts>
+#include <memory>
+#include <string>
+#include <variant>
 
-#include "newtop/model/body.hpp"
-#include "newtop/model/field.hpp"
+#include "newtop/exact/multipole.hpp"
+#include "newtop/model/basic_model.hpp"
 
 namespace newtop {
 
-/// A field is anything with free functions potential(body, field, γ) and grad_gamma(body, field, γ)
-/// found by argument-dependent lookup: V(γ) and ∂V/∂γ regarded as functions of a free vector γ.
-template <class F>
-concept Field = requires(const Body& b, const F& f, const Vec3& g) {
-  { potential(b, f, g) } -> std::convertible_to<double>;
-  { grad_gamma(b, f, g) } -> std::convertible_to<Vec3>;
-};
+/// Which field a model has.
+enum class FieldKind { quadratic, exact, multipole };
 
-/// Body plus field: pure data, immutable by convention (Pinocchio's Model).
-template <Field F>
-struct BasicModel {
-  Body body;
-  F field;
-};
+/// "quadratic", "exact" or "multipole".
+const char* to_string(FieldKind k);
 
-/// The model of the book: the quadratic field of spec §3.
-using Model = BasicModel<QuadraticField>;
+class Model {
+ public:
+  using Variant = std::variant<QuadraticModel, BasicModel<ExactField>, BasicModel<MultipoleField>>;
 
-/// Phase-space point of the Lie–Poisson form (spec §4): angular momentum m = Iω + k and the unit
-/// vector γ along O′→O, both in the body frame. Time travels beside it.
-struct State {
-  Vec3 m = Vec3::Zero();
-  Vec3 gamma = Vec3::UnitZ();
+  /// The quadratic field of spec §3 on a body given by its mass properties.
+  Model(const Body& body, const QuadraticField& field) : v_(QuadraticModel{body, field}) {}
+  /// The same, from the quadratic view (implicit: a quadratic model is a model).
+  Model(const QuadraticModel& m) : v_(m) {}  // NOLINT(google-explicit-constructor)
 
-  bool operator==(const State&) const = default;
-};
+  /// The quadratic field on the body of a mass model (rotor k).
+  static Model quadratic(std::shared_ptr<const MassModel> mass_model, const QuadraticField& field,
+                         const Vec3& gyrostat = Vec3::Zero());
+  /// The exact field of a centre of parameter μ at distance R on the body of a mass model (rotor
+  /// k): ExactField::make's checks, in the body's principal axes.
+  static Model exact(std::shared_ptr<const MassModel> mass_model, double mu, double R,
+                     const Vec3& gyrostat = Vec3::Zero());
+  /// The multipole expansion of order p of that field (MultipoleField::make's checks).
+  static Model multipole(std::shared_ptr<const MassModel> mass_model, int order, double mu,
+                         double R, const Vec3& gyrostat = Vec3::Zero());
 
-/// ω = I⁻¹(m − k) = ∂H/∂m.
-inline Vec3 omega(const Body& body, const State& s) {
-  return (s.m - body.gyrostat()).cwiseQuotient(body.inertia());
-}
-
-/// State from the angular velocity ω and γ: m = Iω + k.
-inline State state_from_omega(const Body& body, const Vec3& omega, const Vec3& gamma) {
-  return {body.inertia().cwiseProduct(omega) + body.gyrostat(), gamma};
-}
-
-template <Field F>
-double potential(const BasicModel<F>& model, const Vec3& gamma) {
-  return potential(model.body, model.field, gamma);
-}
-
-template <Field F>
-Vec3 grad_gamma(const BasicModel<F>& model, const Vec3& gamma) {
-  return grad_gamma(model.body, model.field, gamma);
-}
-
-/// A field with its own moment(body, field, γ) (found by ADL): one formed without the
-/// cancellation of γ × ∂V/∂γ, whose normal part can exceed the moment by (R/r)² far from the body
-/// (newtop/exact/exact_field.hpp).
-template <class F>
-concept FieldWithMoment = Field<F> && requires(const Body& b, const F& f, const Vec3& g) {
-  { moment(b, f, g) } -> std::convertible_to<Vec3>;
-};
-
-/// Moment about O, L = γ × ∂V/∂γ (spec §2), for any field: the field's own moment where it has
-/// one, the cross product otherwise.
-template <Field F>
-Vec3 moment(const BasicModel<F>& model, const Vec3& gamma) {
-  if constexpr (FieldWithMoment<F>) {
-    return moment(model.body, model.field, gamma);
-  } else {
-    return gamma.cross(grad_gamma(model.body, model.field, gamma));
+  const Body& body() const {
+    return std::visit([](const auto& m) -> const Body& { return m.body; }, v_);
   }
+  FieldKind kind() const { return static_cast<FieldKind>(v_.index()); }
+  const Variant& variant() const { return v_; }
+  /// The mass model the body derives from; null for a body given by its mass properties.
+  const std::shared_ptr<const MassModel>& mass_model() const { return mass_model_; }
+  /// The quadratic view; only for kind() == quadratic (std::bad_variant_access otherwise).
+  const QuadraticModel& quadratic() const { return std::get<QuadraticModel>(v_); }
+
+ private:
+  Model(Variant v, std::shared_ptr<const MassModel> mass_model)
+      : v_(std::move(v)), mass_model_(std::move(mass_model)) {}
+  Variant v_;
+  std::shared_ptr<const MassModel> mass_model_;
+};
+
+static_assert(static_cast<int>(FieldKind::exact) == 1 &&
+                  static_cast<int>(FieldKind::multipole) == 2,
+              "FieldKind follows the order of Model::Variant");
+
+/// The one dispatch of a run: f(const BasicModel<F>&) for the model's field.
+template <class Fn>
+decltype(auto) visit_model(const Model& model, Fn&& f) {
+  return std::visit(std::forward<Fn>(f), model.variant());
 }
 
-/// Time derivative of the state (spec §4): ṁ = m × ω + γ × ∂V/∂γ, γ̇ = γ × ω, with ω = I⁻¹(m − k).
-/// Equivalent to I ω̇ + ω × (Iω + k) = γ × ∂V/∂γ, γ̇ + ω × γ = 0.
-template <Field F>
-State rhs(const BasicModel<F>& model, const State& s) {
-  const Vec3 w = omega(model.body, s);
-  return {s.m.cross(w) + moment(model, s.gamma), s.gamma.cross(w)};
-}
+/// μ and R of an exact or multipole field (μ = 0, R = 0 for the quadratic field).
+struct CentreParameters {
+  double mu = 0.0, R = 0.0;
+  int order = 0;  ///< the multipole order; 0 otherwise
+};
+CentreParameters centre_parameters(const Model& model);
+
+/// The quadratic model of the same body and centre (g = μ/R², λ = 3μ/R³ for an exact or multipole
+/// field; the model itself for the quadratic field): what a command compares with, labelled so.
+QuadraticModel quadratic_approximation(const Model& model);
+
+double potential(const Model& model, const Vec3& gamma);
+Vec3 grad_gamma(const Model& model, const Vec3& gamma);
+Mat3 hessian_gamma(const Model& model, const Vec3& gamma);
+Vec3 moment(const Model& model, const Vec3& gamma);
+Mat3 moment_jacobian(const Model& model, const Vec3& gamma);
+State rhs(const Model& model, const State& s);
 
 }  // namespace newtop

@@ -1,0 +1,102 @@
+#pragma once
+/// \file
+/// BasicModel<F> (body + one concrete field) and State (m, γ) of the Euler–Poisson equations
+/// (spec §4): the monomorphic view the steppers and kernels run on. newtop/model/model.hpp holds
+/// Model, the model of a run whatever its field.
+
+#include <concepts>
+
+#include "newtop/model/body.hpp"
+#include "newtop/model/field.hpp"
+
+namespace newtop {
+
+/// A field is anything with free functions potential(body, field, γ) and grad_gamma(body, field, γ)
+/// found by argument-dependent lookup: V(γ) and ∂V/∂γ regarded as functions of a free vector γ.
+template <class F>
+concept Field = requires(const Body& b, const F& f, const Vec3& g) {
+  { potential(b, f, g) } -> std::convertible_to<double>;
+  { grad_gamma(b, f, g) } -> std::convertible_to<Vec3>;
+};
+
+/// Body plus one concrete field: pure data, immutable by convention. A view: the body of an
+/// exact or multipole field must be the mass model's (Model's factories see to it).
+template <Field F>
+struct BasicModel {
+  Body body;
+  F field;
+};
+
+/// The model of the book: the quadratic field of spec §3 (closed forms, the integrals of spec §5,
+/// the analytic cases).
+using QuadraticModel = BasicModel<QuadraticField>;
+
+/// Phase-space point of the Lie–Poisson form (spec §4): angular momentum m = Iω + k and the unit
+/// vector γ along O′→O, both in the body frame. Time travels beside it.
+struct State {
+  Vec3 m = Vec3::Zero();
+  Vec3 gamma = Vec3::UnitZ();
+
+  bool operator==(const State&) const = default;
+};
+
+/// ω = I⁻¹(m − k) = ∂H/∂m.
+inline Vec3 omega(const Body& body, const State& s) {
+  return (s.m - body.gyrostat()).cwiseQuotient(body.inertia());
+}
+
+/// State from the angular velocity ω and γ: m = Iω + k.
+inline State state_from_omega(const Body& body, const Vec3& omega, const Vec3& gamma) {
+  return {body.inertia().cwiseProduct(omega) + body.gyrostat(), gamma};
+}
+
+template <Field F>
+double potential(const BasicModel<F>& model, const Vec3& gamma) {
+  return potential(model.body, model.field, gamma);
+}
+
+template <Field F>
+Vec3 grad_gamma(const BasicModel<F>& model, const Vec3& gamma) {
+  return grad_gamma(model.body, model.field, gamma);
+}
+
+/// ∂²V/∂γ² (γ a free vector of R³), for a field with its own hessian_gamma(body, field, γ).
+template <Field F>
+Mat3 hessian_gamma(const BasicModel<F>& model, const Vec3& gamma) {
+  return hessian_gamma(model.body, model.field, gamma);
+}
+
+/// ∂L/∂γ, for a field with its own moment_jacobian(body, field, γ).
+template <Field F>
+Mat3 moment_jacobian(const BasicModel<F>& model, const Vec3& gamma) {
+  return moment_jacobian(model.body, model.field, gamma);
+}
+
+/// A field with its own moment(body, field, γ) (found by ADL): one formed without the
+/// cancellation of γ × ∂V/∂γ, whose normal part can exceed the moment by (R/r)² far from the body
+/// (newtop/exact/exact_field.hpp).
+template <class F>
+concept FieldWithMoment = Field<F> && requires(const Body& b, const F& f, const Vec3& g) {
+  { moment(b, f, g) } -> std::convertible_to<Vec3>;
+};
+
+/// Moment about O, L = γ × ∂V/∂γ (spec §2), for any field: the field's own moment where it has
+/// one, the cross product otherwise.
+template <Field F>
+Vec3 moment(const BasicModel<F>& model, const Vec3& gamma) {
+  if constexpr (FieldWithMoment<F>) {
+    return moment(model.body, model.field, gamma);
+  } else {
+    return gamma.cross(grad_gamma(model.body, model.field, gamma));
+  }
+}
+
+/// Time derivative of the state (spec §4): ṁ = m × ω + γ × ∂V/∂γ, γ̇ = γ × ω, with ω = I⁻¹(m − k).
+/// Equivalent to I ω̇ + ω × (Iω + k) = γ × ∂V/∂γ, γ̇ + ω × γ = 0.
+template <Field F>
+State rhs(const BasicModel<F>& model, const State& s) {
+  const Vec3 w = omega(model.body, s);
+  return {s.m.cross(w) + moment(model, s.gamma), s.gamma.cross(w)};
+}
+
+}  // namespace newtop
