@@ -174,3 +174,15 @@ def test_bad_options_raise_value_error():
         newtop.integrate(model, x0, 1.0, method="euler", step=0.1)
     with pytest.raises(ValueError, match="step, tol"):
         newtop.integrate(model, x0, 1.0)
+
+
+def test_every_snippet_of_docs_python_md_runs(tmp_path, monkeypatch):
+    text = open(os.path.join(ROOT, "docs", "python.md")).read()
+    snippets = [block.split("```", 1)[0] for block in text.split("```python\n")[1:]]
+    assert len(snippets) >= 2
+    os.symlink(EXAMPLES, tmp_path / "examples")
+    monkeypatch.chdir(tmp_path)
+    namespace = {}  # the snippets follow one another, as in a session
+    for code in snippets:
+        exec(compile(code, "docs/python.md", "exec"), namespace)
+    assert (tmp_path / "run.html").stat().st_size > 0
