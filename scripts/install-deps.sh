@@ -11,6 +11,8 @@ packages=(
   libomp-dev
   # pictures (python/newtop) and the 3D viewer (three.js embedded by the build; Chromium for its test)
   python3 python3-numpy python3-matplotlib python3-pil python3-pytest libjs-three chromium
+  # the Python module (python/src)
+  pybind11-dev python3-dev
   # clang for the sanitizer build of scripts/test.sh
   clang libclang-rt-14-dev llvm
 )

@@ -1,17 +1,25 @@
 """newtop from Python.
 
-Today this package holds the pictures (``newtop.plot``) and the readers of the files that the
-``newtop`` program writes (``newtop.results``); both are pure Python (numpy, matplotlib).
+The compiled extension ``newtop._newtop`` (pybind11) gives the library: ``Body``,
+``QuadraticField``, ``Model``, ``State``, ``load_scenario``, ``integrals``, ``integrate`` (numpy
+arrays); ``newtop.commands`` gives one function per subcommand (``newtop.simulate``,
+``newtop.integrals``, ``newtop.equilibria``, ``newtop.stability``, ``newtop.analytic``, ...) that
+returns the subcommand's JSON as a dict. Both are re-exported here (docs/python.md).
 
-The compiled extension (pybind11: ``Body``, the fields, ``Model``, ``State``, ``integrate`` and one
-function per subcommand) will be the module ``newtop._newtop``. When it is built, its names are
-re-exported here; without it ``import newtop`` still works and ``newtop.HAVE_EXTENSION`` is False.
+The pictures (``newtop.plot``) and the readers of newtop's files (``newtop.results``) are pure
+Python (numpy, matplotlib): without the extension ``import newtop`` still works for them and
+``newtop.HAVE_EXTENSION`` is False.
 """
 
 __version__ = "0.1.0"
 
 try:  # the compiled extension, when the build made one (PYTHONPATH=build/python)
-    from ._newtop import *  # noqa: F401,F403
+    from ._newtop import (Body, InputError, Model, QuadraticField, Scenario, State,  # noqa: F401
+                          conserved_integrals, integrate, is_orbit_scenario, load_scenario,
+                          parse_scenario)
+    from ._newtop import integrals as integrals_at  # noqa: F401  (the library's, at a state)
+    from .commands import (analytic, equilibria, field, find_integrals, integrals,  # noqa: F401
+                           libration, rotations, simulate, stability, view)
 
     HAVE_EXTENSION = True
 except ModuleNotFoundError as e:  # absent is fine; present but broken is an error
@@ -20,3 +28,8 @@ except ModuleNotFoundError as e:  # absent is fine; present but broken is an err
     HAVE_EXTENSION = False
 
 __all__ = ["HAVE_EXTENSION", "__version__"]
+if HAVE_EXTENSION:
+    __all__ += ["Body", "InputError", "Model", "QuadraticField", "Scenario", "State",
+                "analytic", "conserved_integrals", "equilibria", "field", "find_integrals",
+                "integrals", "integrals_at", "integrate", "is_orbit_scenario", "libration",
+                "load_scenario", "parse_scenario", "rotations", "simulate", "stability", "view"]

@@ -1,0 +1,146 @@
+"""One Python function per ``newtop`` subcommand.
+
+``newtop.simulate(scenario, t_end=..., step=...)`` runs ``newtop simulate SCENARIO --t-end ...
+--step ... --json`` in this process and returns its JSON as a dict: the same keys and the same
+numbers, bit for bit (the JSON carries 17 significant digits). Lists of numbers become numpy
+arrays (vectors: shape (3,); tables: (N, k)). A keyword ``name=value`` is the option ``--name
+value`` (underscores become dashes); ``True`` is a flag, ``None`` and ``False`` leave it out; a list
+or tuple is written comma-separated (``times=[1, 2]`` is ``--times 1,2``).
+
+Errors: bad input raises ``ValueError`` with the command line's one-line message (without the
+``newtop: error:`` prefix); an internal error raises ``RuntimeError``; an interrupted run raises
+``KeyboardInterrupt``. A run that ended before ``t_end`` (exit code 3) returns its result: its
+``outcome`` says why.
+"""
+
+import json
+import os
+
+import numpy as np
+
+from . import _newtop
+
+_BAD_INPUT = 2
+_INCOMPLETE = 3
+_PREFIX = "newtop: error: "
+
+
+def _option(name, value):
+    flag = "--" + name.replace("_", "-")
+    if value is None or value is False:
+        return []
+    if value is True:
+        return [flag]
+    if isinstance(value, (list, tuple, np.ndarray)):
+        return [flag, ",".join(_number(v) for v in value)]
+    return [flag, _number(value)]
+
+
+def _number(v):
+    if isinstance(v, float):
+        return repr(v)  # the shortest form that reads back to the same double
+    return str(v)
+
+
+def _scenario_path(scenario):
+    if isinstance(scenario, _newtop.Scenario):
+        return scenario.source
+    return os.fspath(scenario)
+
+
+def _arrays(value):
+    """Lists of numbers (or of equal-length lists of numbers) to numpy arrays, recursively."""
+    if isinstance(value, dict):
+        return {k: _arrays(v) for k, v in value.items()}
+    if isinstance(value, list):
+        if value and all(_is_number(v) for v in value):
+            return np.array(value, dtype=float)
+        if (value and all(isinstance(v, list) and v and all(_is_number(x) for x in v)
+                          for v in value) and len({len(v) for v in value}) == 1):
+            return np.array(value, dtype=float)
+        return [_arrays(v) for v in value]
+    return value
+
+
+def _is_number(v):
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def run(words):
+    """Runs ``newtop WORDS...`` in this process; returns (exit code, stdout, stderr) as text."""
+    code, out, err = _newtop._run_command_line([str(w) for w in words])
+    return code, out.decode("utf-8"), err.decode("utf-8")
+
+
+def _check(code, err):
+    line = err.strip().splitlines()[-1] if err.strip() else ""
+    if code == _BAD_INPUT:
+        raise ValueError(line[len(_PREFIX):] if line.startswith(_PREFIX) else line)
+    if code > 128:
+        raise KeyboardInterrupt(line)
+    if code not in (0, _INCOMPLETE):
+        raise RuntimeError(line or "newtop exited with code %d" % code)
+
+
+def command(name, scenario, **options):
+    """The JSON of ``newtop NAME SCENARIO --json [options]`` as a dict (see the module's doc)."""
+    words = [name]
+    if scenario is not None:
+        words.append(_scenario_path(scenario))
+    for key, value in options.items():
+        words += _option(key, value)
+    words.append("--json")
+    code, out, err = run(words)
+    _check(code, err)
+    return _arrays(json.loads(out))
+
+
+def _make(name, doc):
+    def fn(scenario, **options):
+        return command(name, scenario, **options)
+
+    fn.__name__ = name.replace("-", "_")
+    fn.__qualname__ = fn.__name__
+    fn.__doc__ = doc + "\n\nOptions as for `newtop %s --help` (see newtop.commands)." % name
+    return fn
+
+
+analytic = _make("analytic", "Integrable case detected and its closed form against the numerics.")
+equilibria = _make("equilibria", "Every equilibrium at rest, its type and the count rule (spec 7).")
+field = _make("field", "Exact and quadratic field of a mass model: V, dV/dgamma, moment, force.")
+find_integrals = _make("find-integrals", "Numerical search for polynomial first integrals.")
+integrals = _make("integrals", "First integrals at the initial state and which are conserved.")
+libration = _make("libration", "Planar pitch on an elliptic orbit: resonances, Floquet, section.")
+rotations = _make("rotations", "Families of permanent rotations (spec 6).")
+stability = _make("stability", "Linear and energy-Casimir stability; diagrams and scans.")
+
+
+def simulate(scenario, **options):
+    """``newtop simulate SCENARIO --json [options]`` as a dict, with the trajectory.
+
+    Adds ``trajectory``: the dict of ``newtop.integrate`` for the same scenario and options (t,
+    omega, gamma, m and the integrals at every accepted step, numpy views of one buffer). The
+    options ``t_end``, ``method``, ``step`` and ``tol`` apply to both; ``out``, ``every``,
+    ``dt_out`` and ``times`` only to the CSV file the command writes.
+    """
+    result = command("simulate", scenario, **options)
+    path = _scenario_path(scenario)
+    if not _newtop.is_orbit_scenario(path):  # orbit scenarios: the JSON only, for now
+        sc = scenario if isinstance(scenario, _newtop.Scenario) else _newtop.load_scenario(path)
+        keys = {k: options.get(k) for k in ("t_end", "method", "step", "tol")}
+        result["trajectory"] = _newtop.integrate(sc, **keys)
+    return result
+
+
+def view(csv, out, scenario=None):
+    """``newtop view CSV -o OUT [--scenario S]``: a self-contained HTML page; returns OUT."""
+    words = ["view", os.fspath(csv), "-o", os.fspath(out)]
+    if scenario is not None:
+        words += ["--scenario", _scenario_path(scenario)]
+    code, _, err = run(words)
+    _check(code, err)
+    return out
+
+
+__all__ = ["analytic", "command", "equilibria", "field", "find_integrals", "integrals",
+           "libration", "rotations", "run", "simulate", "stability", "view"]

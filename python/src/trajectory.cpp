@@ -1,0 +1,148 @@
+// integrate(): one run of any method into numpy arrays. The samples go into one growing buffer of
+// rows (t, omega, gamma, m, integrals) that the returned arrays view without a copy.
+
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "newtop/integrate/methods.hpp"
+#include "newtop/io/scenario.hpp"
+#include "newtop/model/integrals.hpp"
+
+namespace py = pybind11;
+
+namespace newtop::python {
+namespace {
+
+/// Row layout: t, omega (3), gamma (3), m (3), energy, area, geometric[, brun][, lagrange].
+struct Rows {
+  explicit Rows(const Model& model) : model_(model) {
+    const IntegralValues v = integrals(model, State{});
+    if (v.brun) names.push_back("brun");
+    if (v.lagrange) names.push_back("lagrange");
+    width = 10 + static_cast<py::ssize_t>(names.size());
+  }
+  void add(double t, const State& s) {
+    const Vec3 w = omega(model_.body(), s);
+    const IntegralValues v = integrals(model_, s);
+    data.push_back(t);
+    for (int i = 0; i < 3; ++i) data.push_back(w[i]);
+    for (int i = 0; i < 3; ++i) data.push_back(s.gamma[i]);
+    for (int i = 0; i < 3; ++i) data.push_back(s.m[i]);
+    data.push_back(v.energy);
+    data.push_back(v.area);
+    data.push_back(v.geometric);
+    if (v.brun) data.push_back(*v.brun);
+    if (v.lagrange) data.push_back(*v.lagrange);
+  }
+  std::vector<std::string> names{"energy", "area", "geometric"};
+  py::ssize_t width = 0;
+  std::vector<double> data;
+
+ private:
+  const Model& model_;
+};
+
+/// Hands the rows to numpy (the buffer moves into the array's owner) and returns the columns as
+/// views of it.
+py::dict columns(Rows&& rows) {
+  auto* owned = new std::vector<double>(std::move(rows.data));
+  const py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  const auto n = static_cast<py::ssize_t>(owned->size()) / rows.width;
+  const auto row = static_cast<py::ssize_t>(sizeof(double)) * rows.width;
+  const auto col = static_cast<py::ssize_t>(sizeof(double));
+  const py::array_t<double> table({n, rows.width}, {row, col}, owned->data(), owner);
+  py::dict d;
+  auto view = [&](py::ssize_t first, py::ssize_t count) -> py::object {
+    if (count == 1) return table[py::make_tuple(py::slice(0, n, 1), first)];
+    return table[py::make_tuple(py::slice(0, n, 1), py::slice(first, first + count, 1))];
+  };
+  d["t"] = view(0, 1);
+  d["omega"] = view(1, 3);
+  d["gamma"] = view(4, 3);
+  d["m"] = view(7, 3);
+  for (std::size_t i = 0; i < rows.names.size(); ++i) {
+    d[py::str(rows.names[i])] = view(10 + static_cast<py::ssize_t>(i), 1);
+  }
+  d["table"] = table;
+  return d;
+}
+
+py::dict run(const Model& model, const State& x0, double t0, double t1,
+             const MethodSettings& method, IntegrateOptions options) {
+  Rows rows(model);
+  Outcome out;
+  {
+    const py::gil_scoped_release unlocked;
+    out = visit_model(model, [&](const auto& m) {
+      return run_method(method, m, x0, t0, t1, options,
+                        [&](double t, const State& s) { rows.add(t, s); });
+    });
+  }
+  py::dict d = columns(std::move(rows));
+  d["outcome"] = std::string(to_string(out.status));
+  d["steps"] = out.steps;
+  d["rejected"] = out.rejected;
+  d["method"] = method.name;
+  d["step"] = method.step;
+  return d;
+}
+
+/// The method as the command line resolves it: a name, or the default for a step or a tolerance.
+MethodSettings settings(const std::optional<std::string>& name, std::optional<double> step,
+                        std::optional<double> tol) {
+  if (step && tol) throw InputError("step, tol: expected one of them, found both");
+  if (!step && !tol) throw InputError("step, tol: expected a step or a tolerance, found neither");
+  MethodSettings s;
+  s.name = name.value_or(std::string(step ? kDefaultFixedMethod : kDefaultAdaptiveMethod));
+  if (step) s.step = *step;
+  if (tol) s.abs_tol = s.rel_tol = *tol;
+  validate(s);
+  return s;
+}
+
+}  // namespace
+
+void bind_trajectory(py::module_& m) {
+  m.def(
+      "integrate",
+      [](const Model& model, const State& state, double t_end, double t0,
+         const std::optional<std::string>& method, std::optional<double> step,
+         std::optional<double> tol, std::optional<std::int64_t> max_steps) {
+        IntegrateOptions o;
+        if (max_steps) o.max_steps = *max_steps;
+        return run(model, state, t0, t_end, settings(method, step, tol), o);
+      },
+      py::arg("model"), py::arg("state"), py::arg("t_end"), py::kw_only(), py::arg("t0") = 0.0,
+      py::arg("method") = py::none(), py::arg("step") = py::none(), py::arg("tol") = py::none(),
+      py::arg("max_steps") = py::none(),
+      "Integrates the Euler-Poisson equations (spec section 4) from (t0, state) to t_end with a "
+      "method by name (splitting2..8, rk4, dopri5, rkf78); a step selects splitting6 by default "
+      "and a tolerance rkf78. Returns a dict of numpy arrays over the accepted steps: t (N), "
+      "omega, gamma, m (N x 3), energy, area, geometric[, brun][, lagrange] (N), all views of "
+      "one (N x W) array 'table'; and 'outcome', 'steps', 'rejected', 'method', 'step'.");
+  m.def(
+      "integrate",
+      [](const io::Scenario& sc, std::optional<double> t_end,
+         const std::optional<std::string>& method, std::optional<double> step,
+         std::optional<double> tol) {
+        const io::IntegrateOverrides ov{method, step, tol, t_end};
+        IntegrateOptions o;
+        if (sc.integrate.max_steps) o.max_steps = *sc.integrate.max_steps;
+        const double t1 = io::resolve_t_end(sc, ov);
+        check_time_span(sc.integrate.t0, t1);
+        return run(sc.model, sc.initial, sc.integrate.t0, t1, io::resolve_method(sc, ov), o);
+      },
+      py::arg("scenario"), py::kw_only(), py::arg("t_end") = py::none(),
+      py::arg("method") = py::none(), py::arg("step") = py::none(), py::arg("tol") = py::none(),
+      "Integrates a scenario with its [integrate] settings, overridden as on the command line "
+      "(newtop simulate --t-end, --method, --step, --tol). Same result as the other form.");
+}
+
+}  // namespace newtop::python

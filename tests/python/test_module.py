@@ -1,0 +1,188 @@
+"""The compiled module newtop._newtop and the per-subcommand functions: the same numbers, bit for
+bit, as the newtop program (its JSON and CSV), numpy arrays of the documented shapes viewing one
+buffer, and bad input raised as ValueError with the program's message.
+
+Run by ctest with NEWTOP_PYTHON_MODULE (build/python) and NEWTOP_EXE set
+(tests/python/CMakeLists.txt)."""
+
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+sys.path.insert(0, os.environ["NEWTOP_PYTHON_MODULE"])
+import newtop  # noqa: E402
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+EXAMPLES = os.path.join(ROOT, "examples")
+EXE = os.environ["NEWTOP_EXE"]
+
+
+def example(name):
+    return os.path.join(EXAMPLES, name)
+
+
+def program(*words):
+    p = subprocess.run([EXE, *words], capture_output=True, text=True)
+    return p.returncode, p.stdout, p.stderr
+
+
+def program_json(*words):
+    code, out, err = program(*words, "--json")
+    assert code == 0, err
+    return json.loads(out)
+
+
+def same(python_value, json_value):
+    """Equal to the bit: numpy arrays against JSON lists, dicts key by key."""
+    if isinstance(json_value, dict):
+        assert set(python_value) >= set(json_value)
+        for k, v in json_value.items():
+            same(python_value[k], v)
+    elif isinstance(json_value, list):
+        assert len(python_value) == len(json_value)
+        for a, b in zip(python_value, json_value):
+            same(a, b)
+    elif isinstance(json_value, float):
+        assert float(python_value) == json_value or (np.isnan(python_value) and np.isnan(json_value))
+    else:
+        assert python_value == json_value
+
+
+def test_extension_is_loaded():
+    assert newtop.HAVE_EXTENSION
+
+
+@pytest.mark.parametrize("name", ["integrals", "equilibria", "rotations", "analytic"])
+@pytest.mark.parametrize("scenario", ["brun.toml", "heavy_top.toml", "exact_box_multipole.toml"])
+def test_commands_give_the_programs_json(name, scenario):
+    if name == "analytic" and scenario != "brun.toml":
+        pytest.skip("analytic needs an integrable case")
+    result = getattr(newtop, name)(example(scenario))
+    same(result, program_json(name, example(scenario)))
+
+
+def test_simulate_json_and_trajectory_match_the_program_bit_for_bit(tmp_path):
+    csv = tmp_path / "run.csv"
+    result = newtop.simulate(example("brun.toml"), t_end=3.0, step=0.01, out=str(csv))
+    cli = program_json("simulate", example("brun.toml"), "--t-end", "3", "--step", "0.01",
+                       "--out", str(tmp_path / "cli.csv"))
+    assert (tmp_path / "cli.csv").read_text() == csv.read_text()
+    paths = [k for k, v in cli.items() if v == str(tmp_path / "cli.csv")]
+    assert len(paths) == 1 and result[paths[0]] == str(csv)  # the one key that differs
+    same({k: v for k, v in result.items() if k not in ["trajectory", *paths]},
+         {k: v for k, v in cli.items() if k not in paths})
+    header = csv.read_text().splitlines()[0].split(",")
+    table = np.loadtxt(csv, delimiter=",", skiprows=1)
+    tr = result["trajectory"]
+    assert tr["t"].shape == (table.shape[0],)
+    assert np.array_equal(tr["t"], table[:, header.index("t")])
+    assert np.array_equal(tr["omega"], table[:, [header.index(c) for c in ("p", "q", "r")]])
+    assert np.array_equal(tr["gamma"],
+                          table[:, [header.index("gamma%d" % i) for i in (1, 2, 3)]])
+    for name in ("energy", "area", "geometric", "brun"):
+        assert np.array_equal(tr[name], table[:, header.index(name)]), name
+    assert np.array_equal(tr["m"][-1], result["final"]["m"])
+    assert tr["outcome"] == result["outcome"]
+
+
+def test_integrate_gives_arrays_of_one_buffer():
+    body = newtop.Body.from_principal([1.0, 2.0, 2.5], 1.0, [0.0, 0.0, 0.1])
+    model = newtop.Model(body, newtop.QuadraticField.from_mu_R(1.0, 2.0))
+    x0 = newtop.State.from_omega(body, [0.1, 0.2, 0.3], [0.0, 0.6, 0.8])
+    r = newtop.integrate(model, x0, 10.0, step=0.01)
+    n = 1001  # t0 and the 1000 steps
+    assert r["t"].shape == (n,) and r["t"].dtype == np.float64
+    for k in ("omega", "gamma", "m"):
+        assert r[k].shape == (n, 3) and r[k].dtype == np.float64
+    for k in ("energy", "area", "geometric"):
+        assert r[k].shape == (n,)
+    assert "brun" not in r and "lagrange" not in r  # neither holds for this body
+    table = r["table"]
+    assert table.shape == (n, 13) and table.flags.c_contiguous
+    for k in ("t", "omega", "gamma", "m", "energy", "area", "geometric"):
+        assert r[k].base is table, k  # views, not copies
+    assert r["t"][-1] == 10.0 and r["outcome"] == "finished" and r["steps"] == 1000
+    # the library's integrals at the last state, and omega = I^-1 m
+    last = newtop.State(r["m"][-1], r["gamma"][-1])
+    assert newtop.integrals_at(model, last)["energy"] == r["energy"][-1]
+    assert np.array_equal(last.omega(body), r["omega"][-1])
+
+
+def test_model_functions_against_the_formulas_of_spec_section_3():
+    inertia, r0, mass = np.array([1.0, 2.0, 2.5]), np.array([0.3, -0.2, 0.1]), 2.0
+    body = newtop.Body.from_principal(inertia, mass, r0)
+    f = newtop.QuadraticField.from_mu_R(3.0, 2.0)
+    model = newtop.Model(body, f)
+    assert f.g == 3.0 / 4.0 and f.lambda_ == 9.0 / 8.0
+    gamma = np.array([0.48, 0.6, 0.64])
+    v = mass * f.g * r0 @ gamma + 0.5 * f.lambda_ * gamma @ (inertia * gamma)
+    grad = mass * f.g * r0 + f.lambda_ * inertia * gamma
+    assert model.potential(gamma) == pytest.approx(v, rel=4e-16)
+    assert np.allclose(model.grad_gamma(gamma), grad, rtol=4e-16, atol=0)
+    assert np.allclose(model.hessian_gamma(gamma), f.lambda_ * np.diag(inertia), rtol=0, atol=0)
+    assert np.allclose(model.moment(gamma), np.cross(gamma, grad), rtol=1e-15, atol=1e-16)
+
+
+def test_scenario_loads_into_the_same_objects():
+    sc = newtop.load_scenario(example("exact_box_multipole.toml"))
+    assert sc.model.kind in ("exact", "multipole")
+    r = newtop.integrate(sc, t_end=0.5)
+    cli = program_json("simulate", example("exact_box_multipole.toml"), "--t-end", "0.5")
+    assert np.array_equal(r["m"][-1], cli["final"]["m"])
+    assert np.array_equal(r["gamma"][-1], cli["final"]["gamma"])
+
+
+BAD = {
+    "malformed.toml": "[body\ninertia = [1, 2, 3]\n",
+    "unknown.toml": "[body]\ninertia = [1, 2, 2.5]\nmass = 1\ncolour = 3\n",
+    "nonphysical.toml": "[body]\ninertia = [1, 2, 4.5]\nmass = 1\n",
+    "nan.toml": "[body]\ninertia = [1, 2, 2.5]\nmass = nan\n",
+    "length.toml": "[body]\ninertia = [1, 2]\nmass = 1\n",
+}
+
+
+@pytest.mark.parametrize("name", sorted(BAD))
+def test_bad_input_raises_value_error_with_the_programs_message(tmp_path, name):
+    path = tmp_path / name
+    path.write_text(BAD[name])
+    code, _, err = program("integrals", str(path), "--json")
+    assert code == 2
+    message = err.strip().removeprefix("newtop: error: ")
+    with pytest.raises(ValueError) as e:
+        newtop.integrals(str(path))
+    assert str(e.value) == message
+    with pytest.raises(ValueError) as e:
+        newtop.load_scenario(str(path))
+    assert str(e.value) == message
+
+
+def test_bad_options_raise_value_error():
+    with pytest.raises(ValueError, match="step"):
+        newtop.simulate(example("brun.toml"), step=-1.0)
+    with pytest.raises(ValueError, match="t_end"):
+        newtop.simulate(example("brun.toml"), t_end=float("inf"))
+    with pytest.raises(ValueError, match="inertia"):
+        newtop.Body.from_principal([1.0, 2.0, 4.5], 1.0)
+    body = newtop.Body.from_principal([1.0, 2.0, 2.5], 1.0)
+    model = newtop.Model(body, newtop.QuadraticField.uniform(1.0))
+    x0 = newtop.State([0.1, 0.2, 0.3], [0.0, 0.0, 1.0])
+    with pytest.raises(ValueError, match="method"):
+        newtop.integrate(model, x0, 1.0, method="euler", step=0.1)
+    with pytest.raises(ValueError, match="step, tol"):
+        newtop.integrate(model, x0, 1.0)
+
+
+def test_every_snippet_of_docs_python_md_runs(tmp_path, monkeypatch):
+    text = open(os.path.join(ROOT, "docs", "python.md")).read()
+    snippets = [block.split("```", 1)[0] for block in text.split("```python\n")[1:]]
+    assert len(snippets) >= 2
+    os.symlink(EXAMPLES, tmp_path / "examples")
+    monkeypatch.chdir(tmp_path)
+    namespace = {}  # the snippets follow one another, as in a session
+    for code in snippets:
+        exec(compile(code, "docs/python.md", "exec"), namespace)
+    assert (tmp_path / "run.html").stat().st_size > 0
