@@ -1,10 +1,10 @@
 // The command line: parses, dispatches to one subcommand, maps errors to exit codes (docs/cli.md).
 // Shared by the program (main.cpp) and the Python module, which runs it in-process.
 
+#include "cli.hpp"
+
 #include <algorithm>
 #include <iostream>
-
-#include "cli.hpp"
 
 #include "command.hpp"
 #include "interrupt.hpp"
