@@ -128,7 +128,11 @@ SweepRun run_sweep(const SweepFile& s, const RunOptions& o) {
     try {
       r = evaluate_point(s, i);
     } catch (const std::exception& e) {  // never a number for a point that failed
-      r = {std::string("error: ") + e.what(), {}};
+      std::string what = std::string("error: ") + e.what();
+      for (char& c : what) {
+        if (c == ',' || c == '\t' || c == '\n' || c == '\r') c = ' ';  // one CSV cell, one line
+      }
+      r = {what, {}};
     }
     const std::lock_guard<std::mutex> guard(lock);
     if (checkpoint.is_open()) {
