@@ -9,10 +9,13 @@ packages=(
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libomp-dev
+  libhdf5-dev
   # pictures (python/newtop) and the 3D viewer (three.js embedded by the build; Chromium for its test)
   python3 python3-numpy python3-matplotlib python3-pil python3-pytest libjs-three chromium
   # the Python module (python/src)
   pybind11-dev python3-dev
+  # HDF5 output of newtop sweep, and its reader for the tests
+  python3-h5py
   # clang for the sanitizer build of scripts/test.sh
   clang libclang-rt-14-dev llvm
 )

@@ -45,6 +45,8 @@ InterruptGuard::~InterruptGuard() {
   sigaction(SIGTERM, &g_previous_term, nullptr);
 }
 
+int pending_signal() { return static_cast<int>(g_signal); }
+
 void throw_if_interrupted(double t) {
   if (g_signal != 0) throw Interrupted(static_cast<int>(g_signal), t);
 }

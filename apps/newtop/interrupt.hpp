@@ -33,6 +33,9 @@ class InterruptGuard {
   InterruptGuard& operator=(const InterruptGuard&) = delete;
 };
 
+/// The signal that arrived under an InterruptGuard, 0 if none.
+int pending_signal();
+
 /// Throws Interrupted{signal, t} when SIGINT or SIGTERM arrived under an InterruptGuard.
 void throw_if_interrupted(double t);
 

@@ -19,7 +19,7 @@ try:  # the compiled extension, when the build made one (PYTHONPATH=build/python
                           parse_scenario)
     from ._newtop import integrals as integrals_at  # noqa: F401  (the library's, at a state)
     from .commands import (analytic, equilibria, field, find_integrals, integrals,  # noqa: F401
-                           libration, rotations, simulate, stability, view)
+                           libration, rotations, simulate, stability, sweep, view)
 
     HAVE_EXTENSION = True
 except ModuleNotFoundError as e:  # absent is fine; present but broken is an error
@@ -32,4 +32,4 @@ if HAVE_EXTENSION:
     __all__ += ["Body", "InputError", "Model", "QuadraticField", "Scenario", "State",
                 "analytic", "conserved_integrals", "equilibria", "field", "find_integrals",
                 "integrals", "integrals_at", "integrate", "is_orbit_scenario", "libration",
-                "load_scenario", "parse_scenario", "rotations", "simulate", "stability", "view"]
+                "load_scenario", "parse_scenario", "rotations", "simulate", "stability", "sweep", "view"]

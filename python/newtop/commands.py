@@ -113,6 +113,8 @@ integrals = _make("integrals", "First integrals at the initial state and which a
 libration = _make("libration", "Planar pitch on an elliptic orbit: resonances, Floquet, section.")
 rotations = _make("rotations", "Families of permanent rotations (spec 6).")
 stability = _make("stability", "Linear and energy-Casimir stability; diagrams and scans.")
+sweep = _make("sweep", "Quantities over a grid of parameters (a sweep file, docs/sweep.md); "
+              "'results' holds one array per column.")
 
 
 def simulate(scenario, **options):
@@ -143,4 +145,4 @@ def view(csv, out, scenario=None):
 
 
 __all__ = ["analytic", "command", "equilibria", "field", "find_integrals", "integrals",
-           "libration", "rotations", "run", "simulate", "stability", "view"]
+           "libration", "rotations", "run", "simulate", "stability", "sweep", "view"]

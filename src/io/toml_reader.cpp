@@ -216,6 +216,33 @@ std::optional<Vec3> TableReader::optional_vec3(const std::string& key) {
   return vec3(key);
 }
 
+std::vector<double> TableReader::numbers(const std::string& key) {
+  const toml::node& n = require(key);
+  const toml::array* a = n.as_array();
+  if (!a || a->empty()) fail(key, "expected a non-empty array of numbers, found " + describe(n));
+  std::vector<double> out;
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    out.push_back(element_number(key, *a->get(i), "element " + std::to_string(i + 1)));
+  }
+  return out;
+}
+
+std::vector<std::string> TableReader::strings(const std::string& key) {
+  const toml::node& n = require(key);
+  const toml::array* a = n.as_array();
+  if (!a || a->empty()) fail(key, "expected a non-empty array of strings, found " + describe(n));
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const auto* v = a->get(i)->as_string();
+    if (!v) {
+      fail_at(*a->get(i), key + "[" + std::to_string(i) + "]",
+              "expected a string, found " + describe(*a->get(i)));
+    }
+    out.push_back(v->get());
+  }
+  return out;
+}
+
 std::vector<std::vector<double>> TableReader::rows(const std::string& key, std::size_t row_length) {
   const toml::node& n = require(key);
   const toml::array* a = n.as_array();

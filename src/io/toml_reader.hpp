@@ -49,6 +49,10 @@ class TableReader {
   Vec3 vec3(const std::string& key);
   std::optional<Vec3> optional_vec3(const std::string& key);
   Mat3 mat3(const std::string& key);
+  /// A non-empty array of numbers (each finite, integers exact).
+  std::vector<double> numbers(const std::string& key);
+  /// A non-empty array of strings.
+  std::vector<std::string> strings(const std::string& key);
   /// An array of arrays of numbers, each row of length row_length (0: any).
   std::vector<std::vector<double>> rows(const std::string& key, std::size_t row_length);
   /// A sub-table; nullptr if absent. Throws if the key holds something else.

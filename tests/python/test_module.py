@@ -186,3 +186,11 @@ def test_every_snippet_of_docs_python_md_runs(tmp_path, monkeypatch):
     for code in snippets:
         exec(compile(code, "docs/python.md", "exec"), namespace)
     assert (tmp_path / "run.html").stat().st_size > 0
+
+
+def test_sweep_gives_one_array_per_column():
+    r = newtop.sweep(example("sweep_beletsky.toml"), quiet=True)
+    cli = program_json("sweep", example("sweep_beletsky.toml"), "--quiet")
+    same(r, cli)
+    assert r["results"]["linearly_stable"].shape == (124,)
+    assert set(r["results"]["linearly_stable"]) == {0.0, 1.0}

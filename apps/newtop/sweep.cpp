@@ -1,0 +1,188 @@
+// newtop sweep SWEEP.toml: quantities over a grid (or zip) of parameters and initial conditions,
+// on every core, checkpointed and resumable (docs/sweep.md).
+
+#include "newtop/sweep/sweep.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "command.hpp"
+#include "interrupt.hpp"
+#include "newtop/io/output.hpp"
+#include "summary.hpp"
+#include "sweep_hdf5.hpp"
+
+namespace newtop::app {
+namespace {
+
+struct SweepArgs {
+  std::string sweep;
+  std::optional<int> threads;
+  std::optional<std::string> out;
+  bool resume = false, quiet = false, json = false;
+};
+
+/// A cell: empty for a failed point or an inconclusive verdict (never a number for them).
+std::string cell(const sweep::PointResult& r, std::size_t k) {
+  if (r.status != "ok" || std::isnan(r.values[k])) return "";
+  return format_number(r.values[k]);
+}
+
+void write_csv(std::ostream& os, const sweep::SweepFile& s, const sweep::SweepRun& run) {
+  const std::vector<std::string> columns = sweep::quantity_columns(s);
+  std::string line;
+  for (const auto& a : s.axes) line += a.key + ",";
+  for (const auto& c : columns) line += c + ",";
+  os << line << "status\n";
+  for (std::size_t i = 0; i < run.results.size(); ++i) {
+    line.clear();
+    for (const double v : sweep::point_values(s, i)) line += format_number(v) + ",";
+    for (std::size_t k = 0; k < columns.size(); ++k) line += cell(run.results[i], k) + ",";
+    os << line << run.results[i].status << '\n';
+  }
+}
+
+io::Json results_json(const sweep::SweepFile& s, const sweep::SweepRun& run) {
+  io::Json cols = io::Json::object();
+  for (std::size_t k = 0; k < s.axes.size(); ++k) {
+    io::Json v = io::Json::array();
+    for (std::size_t i = 0; i < run.results.size(); ++i) v.push_back(sweep::point_values(s, i)[k]);
+    cols[s.axes[k].key] = v;
+  }
+  const std::vector<std::string> columns = sweep::quantity_columns(s);
+  for (std::size_t k = 0; k < columns.size(); ++k) {
+    io::Json v = io::Json::array();
+    for (const auto& r : run.results) {
+      if (r.status != "ok" || std::isnan(r.values[k])) {
+        v.push_back(nullptr);
+      } else {
+        v.push_back(r.values[k]);
+      }
+    }
+    cols[columns[k]] = v;
+  }
+  io::Json status = io::Json::array();
+  for (const auto& r : run.results) status.push_back(r.status);
+  cols["status"] = status;
+  return cols;
+}
+
+/// Progress on stderr: a bar that rewrites itself on a terminal, a line every 5 s otherwise.
+class Progress {
+ public:
+  explicit Progress(bool quiet) : quiet_(quiet), tty_(isatty(STDERR_FILENO) != 0) {}
+  void operator()(std::size_t done, std::size_t total) {
+    if (quiet_) return;
+    const auto now = std::chrono::steady_clock::now();
+    const double since = std::chrono::duration<double>(now - last_).count();
+    if (done < total && since < (tty_ ? 0.2 : 5.0)) return;
+    last_ = now;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const double rate = static_cast<double>(done - first_) / std::max(elapsed, 1e-9);
+    const double left = rate > 0 ? static_cast<double>(total - done) / rate : 0.0;
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "sweep: %zu/%zu points (%.1f%%), %.3g points/s, %.0f s left",
+                  done, total, 100.0 * static_cast<double>(done) / static_cast<double>(total), rate,
+                  left);
+    std::cerr << (tty_ ? "\r" : "") << buf << (tty_ && done < total ? "" : "\n") << std::flush;
+  }
+  void start(std::size_t first) {
+    first_ = first;
+    start_ = last_ = std::chrono::steady_clock::now();
+  }
+
+ private:
+  bool quiet_, tty_;
+  std::size_t first_ = 0;
+  std::chrono::steady_clock::time_point start_, last_;
+};
+
+int run(const SweepArgs& a) {
+  const bool hdf5 = a.out && a.out->size() >= 3 && a.out->substr(a.out->size() - 3) == ".h5";
+  if (hdf5 && !hdf5_available()) {
+    throw InputError(
+        "--out: this build has no HDF5 (install libhdf5-dev and rebuild); give FILE.csv");
+  }
+  if (a.resume && !a.out)
+    throw InputError("--resume: needs --out (the checkpoint is OUT.checkpoint)");
+  if (a.threads && *a.threads < 1) {
+    throw InputError("--threads: expected an integer >= 1, found " + std::to_string(*a.threads));
+  }
+  const sweep::SweepFile s = sweep::load_sweep(a.sweep);
+  // Opened (and so checked) before any work; it appears only when the sweep is complete.
+  std::unique_ptr<io::AtomicFile> file;
+  if (a.out) file = std::make_unique<io::AtomicFile>(*a.out, s.input_files);
+  const InterruptGuard guard;
+  Progress progress(a.quiet);
+  sweep::RunOptions o;
+  o.threads = a.threads.value_or(0);
+  o.resume = a.resume;
+  if (a.out) o.checkpoint = *a.out + ".checkpoint";
+  o.stop = [] { return pending_signal() != 0; };
+  o.progress = [&](std::size_t done, std::size_t total) { progress(done, total); };
+  progress.start(0);
+  const sweep::SweepRun run = sweep::run_sweep(s, o);
+  if (!run.complete) {
+    std::cerr << "newtop: interrupted by " << signal_name(pending_signal()) << "; "
+              << (a.out ? "the finished points are in " + o.checkpoint +
+                              " (newtop sweep --resume completes the sweep)"
+                        : std::string("nothing was written"))
+              << '\n';
+    return 128 + pending_signal();
+  }
+  std::size_t failed = 0;
+  for (const auto& r : run.results) failed += r.status != "ok";
+  if (file && hdf5) {
+    file.reset();  // the checked name; HDF5 writes its own temporary and renames it
+    write_hdf5(*a.out, s, run);
+    std::remove(o.checkpoint.c_str());
+  } else if (file) {
+    write_csv(file->stream(), s, run);
+    file->commit();
+    std::remove(o.checkpoint.c_str());
+  }
+  if (a.json) {
+    io::Json j;
+    j["sweep"] = s.source;
+    j["scenario"] = s.base_source;
+    j["points"] = run.results.size();
+    j["failed"] = failed;
+    j["resumed"] = run.resumed;
+    j["threads"] = run.threads;
+    j["quantities"] = s.quantities;
+    j["out"] = a.out ? io::Json(*a.out) : io::Json(nullptr);
+    j["results"] = results_json(s, run);
+    print_json(std::cout, j);
+    return kExitOk;
+  }
+  std::cout << "newtop sweep " << s.source << " (scenario " << s.base_source << ")\n"
+            << run.results.size() << " points on " << run.threads
+            << (run.threads == 1 ? " thread" : " threads");
+  if (run.resumed) std::cout << " (" << run.resumed << " read back from the checkpoint)";
+  std::cout << "; " << failed << " failed\n";
+  if (a.out) std::cout << "results: " << *a.out << "\n";
+  if (!a.out) write_csv(std::cout, s, run);
+  return kExitOk;
+}
+
+const RegisterCommand reg{Command{
+    "sweep", "Quantities over a grid of parameters and initial conditions, on every core",
+    [](CLI::App& sub) -> std::function<int()> {
+      auto a = std::make_shared<SweepArgs>();
+      sub.add_option("sweep", a->sweep, "sweep file (TOML, docs/sweep.md)")->required();
+      sub.add_option("--threads", a->threads, "threads (default: all cores)");
+      sub.add_option("--out", a->out, "write the results to this CSV or HDF5 (.h5) file");
+      sub.add_flag("--resume", a->resume, "complete an interrupted sweep from OUT.checkpoint");
+      sub.add_flag("--quiet", a->quiet, "no progress on stderr");
+      sub.add_flag("--json", a->json, "print one JSON object (with every column)");
+      return [a] { return run(*a); };
+    }}};
+
+}  // namespace
+}  // namespace newtop::app

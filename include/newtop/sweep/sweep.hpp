@@ -1,0 +1,105 @@
+#pragma once
+/// \file
+/// Sweeps (docs/sweep.md): one base scenario, swept keys and the quantities computed at every point
+/// of a grid (or zip) of their values. A point is evaluated from its own scenario, independently
+/// of every other point, so the results do not depend on the order or the thread that computed
+/// them.
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "newtop/io/scenario.hpp"
+
+namespace newtop::sweep {
+
+/// One swept key and its values: a scenario key (`body.inertia[2]`, `field.lambda`) or an option
+/// of a quantity (`stability.omega`).
+struct Axis {
+  std::string key;
+  std::vector<double> values;
+};
+
+enum class Combine { grid, zip };
+
+/// Options of the `stability` quantity, as `newtop stability --axis --omega`.
+struct StabilityOptions {
+  std::optional<int> axis;  ///< 0, 1, 2 for x, y, z; none: the scenario's own state
+  double omega = 0.0;
+};
+
+/// A sweep file, read and checked: every point's scenario has been built once (bad input at any
+/// point is reported before any work).
+struct SweepFile {
+  std::string source;       ///< the sweep file
+  std::string base_source;  ///< the base scenario file
+  std::string base_text;    ///< its text, as read
+  std::string text;         ///< the sweep file's text, as read
+  std::vector<std::string> quantities;
+  Combine combine = Combine::grid;
+  std::vector<Axis> axes;
+  StabilityOptions stability;
+  io::IntegrateOverrides integrate;
+  std::vector<std::string> input_files;  ///< the sweep file, the base and its mesh files
+};
+
+/// The quantities a sweep can compute.
+const std::vector<std::string>& known_quantities();
+
+/// Reads and checks a sweep file (and the scenario of every point). Throws InputError with one
+/// line naming the key, what was expected and what was found.
+SweepFile load_sweep(const std::string& path);
+
+/// The number of points: the product of the axes' lengths (grid) or their common length (zip).
+std::size_t point_count(const SweepFile& s);
+
+/// The swept values of point `index` (grid order: the last axis varies fastest).
+std::vector<double> point_values(const SweepFile& s, std::size_t index);
+
+/// The columns of the quantities, in the order of SweepFile::quantities.
+std::vector<std::string> quantity_columns(const SweepFile& s);
+
+/// One point's result: `status` "ok" or the outcome that ended its run (then `values` is empty:
+/// a failed run is never recorded as a number). Booleans are 1 and 0; an inconclusive verdict
+/// (lyapunov_stable) is NaN, written as an empty cell.
+struct PointResult {
+  std::string status;
+  std::vector<double> values;
+};
+
+/// Computes the quantities at point `index`.
+PointResult evaluate_point(const SweepFile& s, std::size_t index);
+
+/// The scenario of point `index` (the base with the swept scenario keys set) and its stability
+/// options. Throws InputError naming the point for a value the scenario rejects.
+io::Scenario point_scenario(const SweepFile& s, std::size_t index,
+                            StabilityOptions* options = nullptr);
+
+/// How to run a sweep: threads, the checkpoint file, progress and stop requests.
+struct RunOptions {
+  int threads = 0;         ///< 0: OpenMP's default (all cores)
+  std::string checkpoint;  ///< a file the finished points are appended to; empty: none
+  bool resume = false;     ///< read the checkpoint's finished points and compute only the others
+  /// Called (under a lock, from any thread) after each point with (done, total).
+  std::function<void(std::size_t, std::size_t)> progress;
+  /// Polled before each point: true stops the sweep (the points done stay in the checkpoint).
+  std::function<bool()> stop;
+};
+
+struct SweepRun {
+  std::vector<PointResult> results;  ///< by point index
+  std::size_t resumed = 0;           ///< points read back from the checkpoint
+  bool complete = true;              ///< false when stop() ended it early
+  int threads = 1;
+};
+
+/// Evaluates every point (dynamic schedule over the threads). Each point's result depends only on
+/// the point, so the results are the same bits for any thread count, and read back from a
+/// checkpoint (17 significant digits) they are the same bits as computed. Throws InputError when
+/// the checkpoint exists without `resume`, or belongs to another sweep.
+SweepRun run_sweep(const SweepFile& s, const RunOptions& o);
+
+}  // namespace newtop::sweep

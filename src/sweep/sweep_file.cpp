@@ -1,0 +1,225 @@
+// Sweep files (docs/sweep.md): reading and checking, and the points of the grid or zip.
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include "../io/file_check.hpp"
+#include "../io/toml_parse.hpp"
+#include "../io/toml_reader.hpp"
+#include "newtop/io/suggest.hpp"
+#include "newtop/sweep/sweep.hpp"
+#include "sweep_points.hpp"
+
+namespace newtop::sweep {
+namespace {
+
+/// At most this many points (a CSV of 10⁸ rows is already 10 GB).
+constexpr double kMaxPoints = 1e8;
+
+const std::vector<std::string> kTopKeys{"scenario", "quantities", "combine",
+                                        "axes",     "stability",  "integrate"};
+const std::vector<std::string> kAxisKeys{"key", "start", "stop", "count", "scale", "values"};
+
+/// start, stop, count and scale (linear or log) of one [[axes]] entry, or its values.
+std::vector<double> axis_values(io::TableReader& r) {
+  if (r.has("values")) {
+    r.only({"key", "values"}, kAxisKeys, "values");
+    return r.numbers("values");
+  }
+  const double start = r.number("start");
+  const double stop = r.number("stop");
+  const std::int64_t count = r.integer("count", 1, static_cast<std::int64_t>(kMaxPoints));
+  const std::string scale = r.has("scale") ? r.string("scale") : "linear";
+  if (scale != "linear" && scale != "log") {
+    r.fail("scale", "expected \"linear\" or \"log\", found \"" + scale + "\"");
+  }
+  if (count == 1 && start != stop) {
+    r.fail("count", "expected count >= 2 for start != stop, found 1");
+  }
+  if (scale == "log" && !(start > 0 && stop > 0)) {
+    r.fail(start > 0 ? "stop" : "start", "expected a number > 0 with scale = \"log\", found " +
+                                             format_number(start > 0 ? stop : start));
+  }
+  std::vector<double> v(static_cast<std::size_t>(count));
+  for (std::int64_t i = 0; i < count; ++i) {
+    // Computed from the index (never accumulated), the ends exact.
+    const double f = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
+    v[static_cast<std::size_t>(i)] =
+        i == count - 1   ? stop
+        : scale == "log" ? std::exp(std::log(start) + f * (std::log(stop) - std::log(start)))
+                         : start + f * (stop - start);
+  }
+  v.front() = start;
+  return v;
+}
+
+}  // namespace
+
+const std::vector<std::string>& known_quantities() {
+  static const std::vector<std::string> q{"stability",   "drift", "equilibria",
+                                          "final_state", "megno", "lyapunov_max"};
+  return q;
+}
+
+std::size_t point_count(const SweepFile& s) {
+  if (s.axes.empty()) return 1;
+  if (s.combine == Combine::zip) return s.axes.front().values.size();
+  std::size_t n = 1;
+  for (const Axis& a : s.axes) n *= a.values.size();
+  return n;
+}
+
+std::vector<double> point_values(const SweepFile& s, std::size_t index) {
+  std::vector<double> v(s.axes.size());
+  if (s.combine == Combine::zip) {
+    for (std::size_t k = 0; k < s.axes.size(); ++k) v[k] = s.axes[k].values[index];
+    return v;
+  }
+  for (std::size_t k = s.axes.size(); k-- > 0;) {  // the last axis varies fastest
+    const std::size_t n = s.axes[k].values.size();
+    v[k] = s.axes[k].values[index % n];
+    index /= n;
+  }
+  return v;
+}
+
+}  // namespace newtop::sweep
+
+namespace newtop::sweep {
+namespace {
+
+/// The quantity option an axis may sweep ("stability.omega"); other keys are scenario keys.
+bool is_option_key(const std::string& key) { return key == "stability.omega"; }
+
+void read_stability(io::TableReader& top, SweepFile& s) {
+  const toml::table* t = top.table("stability");
+  if (!t) return;
+  io::TableReader r(*t, s.source, "stability");
+  r.check_keys({"axis", "omega"});
+  if (r.has("axis")) {
+    const std::string a = r.string("axis");
+    if (a != "x" && a != "y" && a != "z") r.fail("axis", "expected x, y or z, found '" + a + "'");
+    s.stability.axis = a[0] - 'x';
+  }
+  if (r.has("omega")) {
+    if (!s.stability.axis) r.fail("omega", "needs axis = \"x\", \"y\" or \"z\" (which axis spins)");
+    s.stability.omega = r.number("omega");
+  }
+  r.finish();
+}
+
+void read_integrate(io::TableReader& top, SweepFile& s) {
+  const toml::table* t = top.table("integrate");
+  if (!t) return;
+  io::TableReader r(*t, s.source, "integrate");
+  r.check_keys({"method", "step", "tol", "t_end"});
+  s.integrate.method = r.optional_string("method");
+  s.integrate.step = r.optional_number("step");
+  s.integrate.tol = r.optional_number("tol");
+  s.integrate.t_end = r.optional_number("t_end");
+  if (s.integrate.step && s.integrate.tol) r.fail("tol", "give either step or tol, not both");
+  r.finish();
+}
+
+void read_axes(const toml::table& doc, SweepFile& s) {
+  const toml::node* n = doc.get("axes");
+  if (!n) return;
+  const toml::array* list = n->as_array();
+  if (!list || !list->is_array_of_tables()) {
+    io::TableReader(doc, s.source, "")
+        .fail("axes", "expected [[axes]] tables, found " + io::describe(*n));
+  }
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    io::TableReader r(*list->get(i)->as_table(), s.source, "axes[" + std::to_string(i + 1) + "]");
+    r.check_keys(kAxisKeys);
+    Axis a{r.string("key"), {}};
+    for (const Axis& b : s.axes) {
+      if (b.key == a.key) r.fail("key", "expected each key once, found '" + a.key + "' again");
+    }
+    a.values = axis_values(r);
+    r.finish();
+    s.axes.push_back(std::move(a));
+  }
+}
+
+}  // namespace
+
+SweepFile load_sweep(const std::string& path) {
+  SweepFile s;
+  s.source = path;
+  s.text = io::read_regular_file(path, io::kMaxTomlBytes, "sweep file");
+  const toml::table doc = io::parse_toml(s.text, path);
+  io::TableReader top(doc, path, "");
+  for (const auto& [key, node] : doc) {
+    const std::string k(key.str());
+    if (std::find(kTopKeys.begin(), kTopKeys.end(), k) != kTopKeys.end()) continue;
+    std::string list;
+    for (const auto& n : kTopKeys) list += (list.empty() ? "" : ", ") + n;
+    const auto close = io::closest_name(k, kTopKeys);
+    top.fail_at(node, k,
+                "unknown key in a sweep file" + (close ? " — did you mean '" + *close + "'?"
+                                                       : " (expected one of: " + list + ")"));
+  }
+  const std::string base = top.string("scenario");
+  const std::filesystem::path base_path(base);
+  s.base_source = base_path.is_absolute()
+                      ? base
+                      : (std::filesystem::path(path).parent_path() / base_path).string();
+  s.quantities = top.strings("quantities");
+  for (const std::string& q : s.quantities) {
+    const auto& known = known_quantities();
+    if (std::find(known.begin(), known.end(), q) == known.end()) {
+      std::string list;
+      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+      top.fail("quantities", "expected any of " + list + ", found '" + q + "'");
+    }
+    if (q == "megno" || q == "lyapunov_max") {
+      top.fail("quantities", "'" + q + "' is not available in this build yet (newtop chaos)");
+    }
+    if (std::count(s.quantities.begin(), s.quantities.end(), q) > 1) {
+      top.fail("quantities", "expected each quantity once, found '" + q + "' twice");
+    }
+  }
+  const std::string combine = top.has("combine") ? top.string("combine") : "grid";
+  if (combine != "grid" && combine != "zip") {
+    top.fail("combine", "expected \"grid\" or \"zip\", found \"" + combine + "\"");
+  }
+  s.combine = combine == "zip" ? Combine::zip : Combine::grid;
+  read_axes(doc, s);
+  read_stability(top, s);
+  read_integrate(top, s);
+  double points = 1;
+  for (const Axis& a : s.axes) {
+    if (s.combine == Combine::zip && a.values.size() != s.axes.front().values.size()) {
+      throw InputError(path + ": combine = \"zip\": expected axes of equal length, found " +
+                       std::to_string(s.axes.front().values.size()) + " values of '" +
+                       s.axes.front().key + "' and " + std::to_string(a.values.size()) + " of '" +
+                       a.key + "'");
+    }
+    points *= static_cast<double>(a.values.size());
+  }
+  if (s.combine == Combine::grid && points > kMaxPoints) {
+    throw InputError(path + ": [[axes]]: expected at most " + format_number(kMaxPoints) +
+                     " points, found " + format_number(points));
+  }
+  for (const Axis& a : s.axes) {
+    if (a.key.rfind("stability.", 0) == 0 && !is_option_key(a.key)) {
+      throw InputError(path + ": [[axes]] key '" + a.key +
+                       "': expected stability.omega or a scenario key");
+    }
+    if (is_option_key(a.key) && !s.stability.axis) {
+      throw InputError(path + ": [[axes]] key 'stability.omega': needs [stability] axis");
+    }
+    if (is_option_key(a.key) &&
+        std::find(s.quantities.begin(), s.quantities.end(), "stability") == s.quantities.end()) {
+      throw InputError(path + ": [[axes]] key 'stability.omega': needs the quantity 'stability'");
+    }
+  }
+  s.base_text = io::read_regular_file(s.base_source, io::kMaxTomlBytes, "scenario file");
+  check_points(s);
+  return s;
+}
+
+}  // namespace newtop::sweep

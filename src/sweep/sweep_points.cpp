@@ -1,0 +1,246 @@
+// The points of a sweep: the base scenario with the swept keys set, and the quantities computed
+// there (docs/sweep.md).
+
+#include "sweep_points.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "../io/toml_parse.hpp"
+#include "../io/toml_reader.hpp"
+#include "newtop/analysis/equilibria.hpp"
+#include "newtop/analysis/stability.hpp"
+#include "newtop/analysis/stability_spin.hpp"
+#include "newtop/integrate/methods.hpp"
+#include "newtop/model/integrals.hpp"
+
+namespace newtop::sweep {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// `section.key` or `section.key[i]` of the base scenario, located in its table.
+struct KeyPath {
+  std::string table, key;
+  std::optional<std::size_t> index;
+};
+
+KeyPath split_key(const SweepFile& s, const std::string& key) {
+  const std::size_t dot = key.find('.');
+  KeyPath p;
+  if (dot == std::string::npos || dot == 0 || dot + 1 == key.size()) {
+    throw InputError(s.source + ": [[axes]] key '" + key +
+                     "': expected section.key or section.key[i] (e.g. body.inertia[2])");
+  }
+  p.table = key.substr(0, dot);
+  p.key = key.substr(dot + 1);
+  if (const std::size_t open = p.key.find('['); open != std::string::npos) {
+    const std::string digits = p.key.substr(open + 1, p.key.size() - open - 2);
+    if (p.key.back() != ']' || digits.empty() ||
+        digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 6) {
+      throw InputError(s.source + ": [[axes]] key '" + key + "': expected an index [i], found '" +
+                       p.key.substr(open) + "'");
+    }
+    p.index = std::stoul(digits);
+    p.key = p.key.substr(0, open);
+  }
+  return p;
+}
+
+/// Sets the swept scenario keys of point `values` in the base's table.
+void set_keys(const SweepFile& s, toml::table& base, const std::vector<double>& values) {
+  for (std::size_t k = 0; k < s.axes.size(); ++k) {
+    const std::string& key = s.axes[k].key;
+    if (key == "stability.omega") continue;
+    const KeyPath p = split_key(s, key);
+    toml::table* t = base[p.table].as_table();
+    toml::node* n = t ? t->get(p.key) : nullptr;
+    if (!n) {
+      throw InputError(s.source + ": [[axes]] key '" + key + "': expected a key of " +
+                       s.base_source + ", found no [" + p.table + "] " + p.key + " there");
+    }
+    if (p.index) {
+      toml::array* a = n->as_array();
+      if (!a) {
+        throw InputError(s.source + ": [[axes]] key '" + key + "': expected an array at [" +
+                         p.table + "] " + p.key + ", found " + io::describe(*n));
+      }
+      if (*p.index >= a->size()) {
+        throw InputError(s.source + ": [[axes]] key '" + key + "': expected an index below " +
+                         std::to_string(a->size()) + ", found " + std::to_string(*p.index));
+      }
+      n = a->get(*p.index);
+    }
+    if (!n->is_number()) {
+      throw InputError(s.source + ": [[axes]] key '" + key + "': expected a numeric key, found " +
+                       io::describe(*n));
+    }
+    if (p.index) {
+      toml::array* a = t->get(p.key)->as_array();
+      a->replace(a->begin() + static_cast<std::ptrdiff_t>(*p.index), values[k]);
+    } else {
+      t->insert_or_assign(p.key, values[k]);
+    }
+  }
+}
+
+std::string point_label(const SweepFile& s, std::size_t index) {
+  const std::vector<double> v = point_values(s, index);
+  std::string label = "point " + std::to_string(index + 1);
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    label += (k ? ", " : " (") + s.axes[k].key + " = " + format_number(v[k]);
+  }
+  return label + (v.empty() ? "" : ")");
+}
+
+/// The state `stability` analyses: the spin about the axis at Ω, or the scenario's own state
+/// polished to a fixed point. Throws InputError when it is not a fixed point.
+State stability_state(const io::Scenario& sc, const StabilityOptions& o) {
+  if (o.axis) {
+    const State x = principal_spin(sc.model.body(), *o.axis, o.omega);
+    const double res = fixed_point_residual(sc.model, x);
+    if (!(res <= kFixedPointTolerance)) {
+      throw InputError(std::string("stability: the spin about ") + "xyz"[*o.axis] +
+                       " is not a permanent rotation (residual " + format_number(res) +
+                       "; M g r0 is not along the axis)");
+    }
+    return x;
+  }
+  const PolishedFixedPoint p = polish_fixed_point(sc.model, sc.initial);
+  if (!p.converged) {
+    throw InputError("stability: [initial] is not an equilibrium or a permanent rotation " +
+                     std::string("(residual ") + format_number(p.residual_given) +
+                     "); give [stability] axis");
+  }
+  return p.state;
+}
+
+bool wants(const SweepFile& s, const std::string& q) {
+  return std::find(s.quantities.begin(), s.quantities.end(), q) != s.quantities.end();
+}
+
+/// One run of the point's scenario: the final state and the drift of the integrals.
+struct RunResult {
+  Outcome outcome;
+  double drift_energy = 0, drift_area = 0, drift_geometric = 0;
+};
+
+RunResult run(const SweepFile& s, const io::Scenario& sc) {
+  const MethodSettings method = io::resolve_method(sc, s.integrate);
+  const double t1 = io::resolve_t_end(sc, s.integrate);
+  IntegrateOptions options;
+  if (sc.integrate.max_steps) options.max_steps = *sc.integrate.max_steps;
+  RunResult r;
+  const IntegralValues i0 = integrals(sc.model, sc.initial);
+  auto observe = [&](double, const State& x) {
+    const IntegralValues v = integrals(sc.model, x);
+    r.drift_energy = std::max(r.drift_energy, std::abs(v.energy - i0.energy));
+    r.drift_area = std::max(r.drift_area, std::abs(v.area - i0.area));
+    r.drift_geometric = std::max(r.drift_geometric, std::abs(v.geometric - i0.geometric));
+  };
+  r.outcome = visit_model(sc.model, [&](const auto& m) {
+    return run_method(method, m, sc.initial, sc.integrate.t0, t1, options, observe);
+  });
+  return r;
+}
+
+}  // namespace
+
+std::vector<std::string> quantity_columns(const SweepFile& s) {
+  std::vector<std::string> c;
+  for (const std::string& q : s.quantities) {
+    if (q == "stability")
+      c.insert(c.end(), {"linearly_stable", "lyapunov_stable", "max_real_part"});
+    if (q == "drift") c.insert(c.end(), {"drift_energy", "drift_area", "drift_geometric"});
+    if (q == "equilibria") c.insert(c.end(), {"equilibria_count", "minima", "saddles", "maxima"});
+    if (q == "final_state") c.insert(c.end(), {"t", "p", "q", "r", "gamma1", "gamma2", "gamma3"});
+  }
+  return c;
+}
+
+io::Scenario point_scenario(const SweepFile& s, std::size_t index, StabilityOptions* options) {
+  const std::vector<double> values = point_values(s, index);
+  toml::table base = io::parse_toml(s.base_text, s.base_source);
+  set_keys(s, base, values);
+  if (options) {
+    *options = s.stability;
+    for (std::size_t k = 0; k < s.axes.size(); ++k) {
+      if (s.axes[k].key == "stability.omega") options->omega = values[k];
+    }
+  }
+  std::ostringstream text;
+  text << base;
+  try {
+    return io::parse_scenario(text.str(), s.base_source);
+  } catch (const InputError& e) {
+    // The line and column are those of the point's rewritten text, not of the base file: drop them.
+    std::string what = e.what();
+    const std::string prefix = s.base_source + ":";
+    if (what.rfind(prefix, 0) == 0) {
+      const std::size_t end = what.find_first_not_of("0123456789:", prefix.size());
+      if (end != std::string::npos && end > prefix.size()) {
+        what = s.base_source + ":" + what.substr(end);
+      }
+    }
+    throw InputError(s.source + ": " + point_label(s, index) + ": " + what);
+  }
+}
+
+void check_points(SweepFile& s) {
+  const std::size_t n = point_count(s);
+  for (std::size_t i = 0; i < n; ++i) {
+    StabilityOptions o;
+    const io::Scenario sc = point_scenario(s, i, &o);
+    if (i == 0) {
+      s.input_files = {s.source};
+      s.input_files.insert(s.input_files.end(), sc.input_files.begin(), sc.input_files.end());
+    }
+    try {
+      if (wants(s, "stability")) stability_state(sc, o);
+      if (wants(s, "drift") || wants(s, "final_state")) {
+        io::resolve_method(sc, s.integrate);
+        const double t1 = io::resolve_t_end(sc, s.integrate);
+        check_time_span(sc.integrate.t0, t1);
+      }
+    } catch (const InputError& e) {
+      throw InputError(s.source + ": " + point_label(s, i) + ": " + e.what());
+    }
+  }
+}
+
+PointResult evaluate_point(const SweepFile& s, std::size_t index) {
+  StabilityOptions o;
+  const io::Scenario sc = point_scenario(s, index, &o);
+  PointResult r{"ok", {}};
+  std::optional<RunResult> traj;
+  if (wants(s, "drift") || wants(s, "final_state")) {
+    traj = run(s, sc);
+    if (traj->outcome.status != Status::finished)
+      return {std::string(to_string(traj->outcome.status)), {}};
+  }
+  for (const std::string& q : s.quantities) {
+    if (q == "stability") {
+      const Spectrum sp = linear_stability(sc.model, stability_state(sc, o));
+      r.values.push_back(sp.linearly_stable ? 1.0 : 0.0);
+      r.values.push_back(sp.lyapunov_stable ? (*sp.lyapunov_stable ? 1.0 : 0.0) : kNaN);
+      r.values.push_back(sp.max_real_part);
+    } else if (q == "drift") {
+      r.values.insert(r.values.end(),
+                      {traj->drift_energy, traj->drift_area, traj->drift_geometric});
+    } else if (q == "equilibria") {
+      const EquilibriumSet e = find_equilibria(sc.model);
+      r.values.insert(r.values.end(),
+                      {static_cast<double>(e.equilibria.size()), static_cast<double>(e.minima),
+                       static_cast<double>(e.saddles), static_cast<double>(e.maxima)});
+    } else if (q == "final_state") {
+      const State& x = traj->outcome.state;
+      const Vec3 w = omega(sc.model.body(), x);
+      r.values.insert(r.values.end(), {traj->outcome.t, w.x(), w.y(), w.z(), x.gamma.x(),
+                                       x.gamma.y(), x.gamma.z()});
+    }
+  }
+  return r;
+}
+
+}  // namespace newtop::sweep

@@ -1,0 +1,195 @@
+// Sweeps: the grid, Beletsky's atlas against the closed form of spec §9, results independent of
+// the thread count, a SIGKILLed sweep resumed to the same bytes, and bad sweep files.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "newtop/sweep/sweep.hpp"
+#include "support/cli.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using newtop::sweep::SweepFile;
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("newtop_sweep_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+fs::path write_file(const std::string& name, const std::string& text) {
+  const fs::path p = scratch(name);
+  std::ofstream(p) << text;
+  return p;
+}
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string example(const char* name) { return newtop::test::example_path(name); }
+
+/// A sweep of runs of the heavy top (drift and final state) over the spin and the step.
+std::string heavy_top_sweep(double t_end, int spins) {
+  return "scenario = \"" + example("heavy_top.toml") +
+         "\"\nquantities = [\"drift\", \"final_state\"]\n[[axes]]\nkey = \"initial.omega[2]\"\n"
+         "start = 1.0\nstop = 10.0\ncount = " +
+         std::to_string(spins) +
+         "\n[[axes]]\nkey = \"integrate.step\"\nvalues = [1e-3, 2e-3]\n[integrate]\nt_end = " +
+         newtop::format_number(t_end) + "\n";
+}
+
+TEST(Sweep, GridOrderHasTheLastAxisFastestAndZipPairs) {
+  const SweepFile s = newtop::sweep::load_sweep(write_file("grid.toml", heavy_top_sweep(1, 3)));
+  ASSERT_EQ(newtop::sweep::point_count(s), 6u);
+  EXPECT_EQ(newtop::sweep::point_values(s, 0), (std::vector<double>{1.0, 1e-3}));
+  EXPECT_EQ(newtop::sweep::point_values(s, 1), (std::vector<double>{1.0, 2e-3}));
+  EXPECT_EQ(newtop::sweep::point_values(s, 2), (std::vector<double>{5.5, 1e-3}));
+  EXPECT_EQ(newtop::sweep::point_values(s, 5), (std::vector<double>{10.0, 2e-3}));
+  std::string zip = heavy_top_sweep(1, 2);
+  zip.insert(zip.find("[[axes]]"), "combine = \"zip\"\n");
+  const SweepFile z = newtop::sweep::load_sweep(write_file("zip.toml", zip));
+  ASSERT_EQ(newtop::sweep::point_count(z), 2u);
+  EXPECT_EQ(newtop::sweep::point_values(z, 1), (std::vector<double>{10.0, 2e-3}));
+  // The point's scenario carries the swept values exactly.
+  const newtop::io::Scenario sc = newtop::sweep::point_scenario(s, 2);
+  EXPECT_EQ(newtop::omega(sc.model.body(), sc.initial).z(), 5.5);
+  EXPECT_EQ(*sc.integrate.step, 1e-3);
+}
+
+// Spec §9: the spin about the largest axis is linearly stable above
+// Ω* = √λ (√a + √b)/(1 + √(ab)), a = (C − B)/A, b = (C − A)/B; every grid point farther than one
+// cell from Ω* must have that verdict.
+TEST(Sweep, BeletskyAtlasHasTheVerdictOfTheClosedForm) {
+  const SweepFile s = newtop::sweep::load_sweep(write_file(
+      "atlas.toml", "scenario = \"" + example("stability_beletsky.toml") +
+                        "\"\nquantities = [\"stability\"]\n[[axes]]\nkey = \"stability.omega\"\n"
+                        "start = 0.0\nstop = 3.0\ncount = 61\n[[axes]]\nkey = \"body.inertia[2]\"\n"
+                        "start = 1.6\nstop = 2.4\ncount = 9\n[stability]\naxis = \"z\"\n"));
+  const double cell = 3.0 / 60.0, A = 1.0, B = 1.5, lambda = 1.0;  // stability_beletsky.toml
+  const newtop::sweep::SweepRun run = newtop::sweep::run_sweep(s, {});
+  int checked = 0;
+  for (std::size_t i = 0; i < run.results.size(); ++i) {
+    const std::vector<double> v = newtop::sweep::point_values(s, i);
+    const double Omega = v[0], C = v[1];
+    const double a = (C - B) / A, b = (C - A) / B;
+    const double threshold =
+        std::sqrt(lambda) * (std::sqrt(a) + std::sqrt(b)) / (1 + std::sqrt(a * b));
+    ASSERT_EQ(run.results[i].status, "ok");
+    if (std::abs(Omega - threshold) <= cell) continue;
+    EXPECT_EQ(run.results[i].values[0], Omega > threshold ? 1.0 : 0.0)
+        << "Omega = " << Omega << ", C = " << C << ", threshold " << threshold;
+    ++checked;
+  }
+  EXPECT_GT(checked, 61 * 9 * 9 / 10);
+}
+
+TEST(Sweep, ResultsAreTheSameBitsForAnyThreadCount) {
+  const SweepFile s = newtop::sweep::load_sweep(write_file("threads.toml", heavy_top_sweep(2, 5)));
+  newtop::sweep::RunOptions one, two;
+  one.threads = 1;
+  two.threads = 2;
+  const auto a = newtop::sweep::run_sweep(s, one), b = newtop::sweep::run_sweep(s, two);
+  ASSERT_EQ(a.results.size(), 10u);
+  for (std::size_t i = 0; i < a.results.size(); ++i) {
+    EXPECT_EQ(a.results[i].status, "ok");
+    EXPECT_EQ(a.results[i].values, b.results[i].values) << "point " << i;  // exact equality
+  }
+  const auto c =
+      newtop::test::run_newtop("sweep " + scratch("threads.toml").string() +
+                               " --quiet --threads 1 --out " + scratch("t1.csv").string());
+  const auto d =
+      newtop::test::run_newtop("sweep " + scratch("threads.toml").string() +
+                               " --quiet --threads 2 --out " + scratch("t2.csv").string());
+  ASSERT_EQ(c.code, 0) << c.out;
+  ASSERT_EQ(d.code, 0) << d.out;
+  EXPECT_EQ(read(scratch("t1.csv")), read(scratch("t2.csv")));
+}
+
+TEST(Sweep, KilledAndResumedEqualsUninterrupted) {
+  const fs::path file = write_file("kill.toml", heavy_top_sweep(150, 6));
+  const auto whole = newtop::test::run_newtop(
+      "sweep " + file.string() + " --quiet --threads 1 --out " + scratch("whole.csv").string());
+  ASSERT_EQ(whole.code, 0) << whole.out;
+  std::random_device seed;
+  std::uniform_real_distribution<double> when(0.2, 1.0);
+  const fs::path out = scratch("killed.csv");
+  const std::string kill = "timeout -s KILL " + std::to_string(when(seed)) + " " + NEWTOP_EXE +
+                           " sweep " + file.string() + " --quiet --threads 1 --out " + out.string();
+  const int status = std::system(kill.c_str());
+  if (WEXITSTATUS(status) == 0) GTEST_SKIP() << "the sweep finished before the kill";
+  EXPECT_FALSE(fs::exists(out));  // nothing half-written
+  ASSERT_TRUE(fs::exists(out.string() + ".checkpoint"));
+  const auto again =
+      newtop::test::run_newtop("sweep " + file.string() + " --quiet --out " + out.string());
+  EXPECT_EQ(again.code, 2) << again.out;  // the checkpoint is not silently overwritten
+  EXPECT_NE(again.out.find("--resume"), std::string::npos) << again.out;
+  const auto resumed = newtop::test::run_newtop(
+      "sweep " + file.string() + " --quiet --resume --json --out " + out.string(),
+      newtop::test::Stderr::separate);
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  EXPECT_EQ(read(out), read(scratch("whole.csv")));
+  EXPECT_FALSE(fs::exists(out.string() + ".checkpoint"));
+}
+
+struct BadSweep {
+  const char* name;
+  std::string text;
+  const char* names;  // what the one line must name
+};
+
+TEST(Sweep, BadSweepFilesGetOneLineAndNoOutput) {
+  const std::string base = "scenario = \"" + example("stability_beletsky.toml") + "\"\n";
+  const std::string axis = "[[axes]]\nkey = \"body.inertia[2]\"\n";
+  const std::vector<BadSweep> cases{
+      {"unknown_key", base + "quantities = [\"stability\"]\ncolour = 1\n", "colour"},
+      {"unknown_quantity", base + "quantities = [\"stabilty\"]\n", "stabilty"},
+      {"empty_values", base + "quantities = [\"drift\"]\n" + axis + "values = []\n", "values"},
+      {"empty_range",
+       base + "quantities = [\"drift\"]\n" + axis + "start = 1\nstop = 2\ncount = 0\n", "count"},
+      {"missing_key",
+       base + "quantities = [\"drift\"]\n[[axes]]\nkey = \"body.colour\"\nvalues = [1]\n",
+       "body.colour"},
+      {"not_numeric",
+       "scenario = \"" + example("heavy_top.toml") +
+           "\"\nquantities = [\"drift\"]\n[[axes]]\nkey = \"field.kind\"\nvalues = [1]\n",
+       "numeric"},
+      {"index_out_of_range",
+       base + "quantities = [\"drift\"]\n[[axes]]\nkey = \"body.inertia[3]\"\nvalues = [1]\n",
+       "index"},
+      {"non_physical", base + "quantities = [\"drift\"]\n" + axis + "values = [2.2, 9.0]\n",
+       "inertia"},
+      {"not_a_fixed_point",
+       base +
+           "quantities = [\"stability\"]\n[[axes]]\nkey = \"initial.omega[0]\"\nvalues = [0.5]\n",
+       "stability"},
+      {"zip_lengths",
+       base + "quantities = [\"drift\"]\ncombine = \"zip\"\n" + axis +
+           "values = [2.2, 2.3]\n[[axes]]\nkey = \"body.inertia[1]\"\nvalues = [1.5]\n",
+       "zip"},
+  };
+  for (const BadSweep& c : cases) {
+    const fs::path f = write_file(std::string(c.name) + ".toml", c.text);
+    const fs::path out = scratch(std::string(c.name) + ".csv");
+    const auto r = newtop::test::run_newtop("sweep " + f.string() + " --out " + out.string());
+    EXPECT_EQ(r.code, 2) << c.name << ": " << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << c.name << ": " << r.out;
+    EXPECT_NE(r.out.find(c.names), std::string::npos) << c.name << ": " << r.out;
+    EXPECT_FALSE(fs::exists(out)) << c.name;
+    EXPECT_FALSE(fs::exists(out.string() + ".checkpoint")) << c.name;
+  }
+}
+
+}  // namespace
