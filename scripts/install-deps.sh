@@ -9,7 +9,7 @@ packages=(
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libomp-dev
-  libhdf5-dev
+  libhdf5-dev libopenmpi-dev openmpi-bin
   # pictures (python/newtop) and the 3D viewer (three.js embedded by the build; Chromium for its test)
   python3 python3-numpy python3-matplotlib python3-pil python3-pytest libjs-three chromium
   # the Python module (python/src)

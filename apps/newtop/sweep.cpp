@@ -17,6 +17,7 @@
 #include "newtop/io/output.hpp"
 #include "summary.hpp"
 #include "sweep_hdf5.hpp"
+#include "sweep_mpi.hpp"
 
 namespace newtop::app {
 namespace {
@@ -73,6 +74,22 @@ io::Json results_json(const sweep::SweepFile& s, const sweep::SweepRun& run) {
   return cols;
 }
 
+/// Sends std::cout and std::cerr nowhere while it lives (the ranks other than 0).
+class Silence {
+ public:
+  Silence() : out_(std::cout.rdbuf(nullptr)), err_(std::cerr.rdbuf(nullptr)) {}
+  ~Silence() {
+    std::cout.rdbuf(out_);
+    std::cerr.rdbuf(err_);
+  }
+  Silence(const Silence&) = delete;
+  Silence& operator=(const Silence&) = delete;
+
+ private:
+  std::streambuf* out_;
+  std::streambuf* err_;
+};
+
 /// Progress on stderr: a bar that rewrites itself on a terminal, a line every 5 s otherwise.
 class Progress {
  public:
@@ -103,7 +120,7 @@ class Progress {
   std::chrono::steady_clock::time_point start_, last_;
 };
 
-int run(const SweepArgs& a) {
+int run_rank(const SweepArgs& a, const MpiSession& mpi) {
   const bool hdf5 = a.out && a.out->size() >= 3 && a.out->substr(a.out->size() - 3) == ".h5";
   if (hdf5 && !hdf5_available()) {
     throw InputError(
@@ -117,7 +134,15 @@ int run(const SweepArgs& a) {
   const sweep::SweepFile s = sweep::load_sweep(a.sweep);
   // Opened (and so checked) before any work; it appears only when the sweep is complete.
   std::unique_ptr<io::AtomicFile> file;
-  if (a.out) file = std::make_unique<io::AtomicFile>(*a.out, s.input_files);
+  std::string error;
+  if (a.out && mpi.rank() == 0) {
+    try {
+      file = std::make_unique<io::AtomicFile>(*a.out, s.input_files);
+    } catch (const InputError& e) {
+      error = e.what();
+    }
+  }
+  if (!mpi.confirm(error.empty())) throw InputError(error);
   const InterruptGuard guard;
   Progress progress(a.quiet);
   sweep::RunOptions o;
@@ -127,7 +152,14 @@ int run(const SweepArgs& a) {
   o.stop = [] { return pending_signal() != 0; };
   o.progress = [&](std::size_t done, std::size_t total) { progress(done, total); };
   progress.start(0);
-  const sweep::SweepRun run = sweep::run_sweep(s, o);
+  sweep::SweepRun run;
+  if (mpi.size() > 1) {
+    std::optional<sweep::SweepRun> r = run_sweep_ranks(mpi, s, o);
+    if (!r) return kExitOk;  // a worker: rank 0 reports
+    run = std::move(*r);
+  } else {
+    run = sweep::run_sweep(s, o);
+  }
   if (!run.complete) {
     std::cerr << "newtop: interrupted by " << signal_name(pending_signal()) << "; "
               << (a.out ? "the finished points are in " + o.checkpoint +
@@ -163,12 +195,26 @@ int run(const SweepArgs& a) {
   }
   std::cout << "newtop sweep " << s.source << " (scenario " << s.base_source << ")\n"
             << run.results.size() << " points on " << run.threads
-            << (run.threads == 1 ? " thread" : " threads");
+            << (mpi.size() > 1     ? (run.threads == 1 ? " worker rank" : " worker ranks")
+                : run.threads == 1 ? " thread"
+                                   : " threads");
   if (run.resumed) std::cout << " (" << run.resumed << " read back from the checkpoint)";
   std::cout << "; " << failed << " failed\n";
   if (a.out) std::cout << "results: " << *a.out << "\n";
   if (!a.out) write_csv(std::cout, s, run);
   return kExitOk;
+}
+
+int run(const SweepArgs& a) {
+  const MpiSession mpi;
+  if (mpi.rank() == 0) return run_rank(a, mpi);
+  // Every rank reads the sweep (the same files, the same verdict); only rank 0 speaks and writes.
+  const Silence silent;
+  try {
+    return run_rank(a, mpi);
+  } catch (const InputError&) {
+    return kExitBadInput;  // rank 0 says why
+  }
 }
 
 const RegisterCommand reg{Command{

@@ -49,6 +49,25 @@ std::string checkpoint_line(std::size_t index, const PointResult& r) {
   return line + '\n';
 }
 
+/// One line of the checkpoint back: nullopt for a line that is not whole.
+std::optional<std::pair<std::size_t, PointResult>> parse_line(const std::string& line,
+                                                              std::size_t width) {
+  std::istringstream f(line);
+  std::string index_text, status, values;
+  if (!std::getline(f, index_text, '\t') || !std::getline(f, status, '\t')) return std::nullopt;
+  std::getline(f, values);
+  if (index_text.empty() || index_text.size() > 18 ||
+      index_text.find_first_not_of("0123456789") != std::string::npos) {
+    return std::nullopt;
+  }
+  PointResult r{status, {}};
+  std::istringstream v(values);
+  std::string cell;
+  while (std::getline(v, cell, ',')) r.values.push_back(std::strtod(cell.c_str(), nullptr));
+  if (status == "ok" ? r.values.size() != width : !r.values.empty()) return std::nullopt;
+  return std::make_pair(static_cast<std::size_t>(std::stoull(index_text)), std::move(r));
+}
+
 /// Reads the finished points back; a last line cut short by a kill is ignored.
 std::size_t read_checkpoint(const SweepFile& s, const std::string& path,
                             std::vector<std::optional<PointResult>>& done) {
@@ -67,29 +86,19 @@ std::size_t read_checkpoint(const SweepFile& s, const std::string& path,
   while (std::getline(lines, line)) {
     pos += line.size() + 1;
     if (pos > text.size() + 1 || text[pos - 1] != '\n') break;  // no newline: cut by the kill
-    std::istringstream f(line);
-    std::string index_text, status, values;
-    if (!std::getline(f, index_text, '\t') || !std::getline(f, status, '\t')) break;
-    std::getline(f, values);
-    PointResult r{status, {}};
-    std::istringstream v(values);
-    std::string cell;
-    while (std::getline(v, cell, ',')) r.values.push_back(std::strtod(cell.c_str(), nullptr));
-    const std::size_t index = std::stoul(index_text);
-    if (index >= done.size() || (status == "ok" && r.values.size() != width)) break;
-    if (!done[index]) ++count;
-    done[index] = std::move(r);
+    auto r = parse_line(line, width);
+    if (!r || r->first >= done.size()) break;
+    if (!done[r->first]) ++count;
+    done[r->first] = std::move(r->second);
   }
   return count;
 }
 
 }  // namespace
 
-SweepRun run_sweep(const SweepFile& s, const RunOptions& o) {
-  const std::size_t n = point_count(s);
-  std::vector<std::optional<PointResult>> done(n);
-  SweepRun out;
-  std::ofstream checkpoint;
+SweepLedger::SweepLedger(const SweepFile& s, const RunOptions& o)
+    : options_(o), done_(point_count(s)) {
+  const std::size_t n = done_.size();
   if (!o.checkpoint.empty()) {
     const bool exists = std::filesystem::exists(o.checkpoint);
     if (exists && !o.resume) {
@@ -97,56 +106,88 @@ SweepRun run_sweep(const SweepFile& s, const RunOptions& o) {
           "--out: " + o.checkpoint +
           " exists (an interrupted sweep): give --resume to complete it, or delete it");
     }
-    if (exists) out.resumed = read_checkpoint(s, o.checkpoint, done);
-    // Rewritten whole (header and the points read), then appended to.
-    checkpoint.open(o.checkpoint, std::ios::trunc);
-    checkpoint << kMagic << ' ' << fingerprint(s) << '\n';
-    for (std::size_t i = 0; i < n; ++i) {
-      if (done[i]) checkpoint << checkpoint_line(i, *done[i]);
+    if (exists) resumed_ = read_checkpoint(s, o.checkpoint, done_);
+    // Rewritten whole (header and the points read) under a temporary name and renamed, then
+    // appended to: a kill at any moment leaves a checkpoint that reads back.
+    const std::string tmp = o.checkpoint + ".new";
+    {
+      std::ofstream fresh(tmp, std::ios::trunc);
+      fresh << kMagic << ' ' << fingerprint(s) << '\n';
+      for (std::size_t i = 0; i < n; ++i) {
+        if (done_[i]) fresh << checkpoint_line(i, *done_[i]);
+      }
+      if (!fresh.flush()) throw InputError("--out: cannot write " + tmp);
     }
-    checkpoint.flush();
+    std::filesystem::rename(tmp, o.checkpoint);
+    checkpoint_.open(o.checkpoint, std::ios::app);
   }
-  std::vector<std::size_t> todo;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!done[i]) todo.push_back(i);
+    if (!done_[i]) todo_.push_back(i);
   }
-  std::mutex lock;
-  std::size_t finished = n - todo.size();
+  finished_ = n - todo_.size();
+}
+
+void SweepLedger::record(std::size_t index, PointResult r) {
+  const std::lock_guard<std::mutex> guard(lock_);
+  if (checkpoint_.is_open()) {
+    checkpoint_ << checkpoint_line(index, r);
+    checkpoint_.flush();
+  }
+  done_[index] = std::move(r);
+  ++finished_;
+  if (options_.progress) options_.progress(finished_, done_.size());
+}
+
+SweepRun SweepLedger::finish(bool complete, int workers) {
+  SweepRun out;
+  out.resumed = resumed_;
+  out.complete = complete;
+  out.threads = workers;
+  out.results.reserve(done_.size());
+  for (auto& d : done_) out.results.push_back(d ? std::move(*d) : PointResult{"not_run", {}});
+  return out;
+}
+
+PointResult evaluate_point_safely(const SweepFile& s, std::size_t index) {
+  try {
+    return evaluate_point(s, index);
+  } catch (const std::exception& e) {  // never a number for a point that failed
+    std::string what = std::string("error: ") + e.what();
+    for (char& c : what) {
+      if (c == ',' || c == '\t' || c == '\n' || c == '\r') c = ' ';  // one CSV cell, one line
+    }
+    return {what, {}};
+  }
+}
+
+std::string encode_result(std::size_t index, const PointResult& r) {
+  return checkpoint_line(index, r);
+}
+
+std::optional<std::pair<std::size_t, PointResult>> decode_result(const std::string& line,
+                                                                 std::size_t width) {
+  return parse_line(line, width);
+}
+
+SweepRun run_sweep(const SweepFile& s, const RunOptions& o) {
+  SweepLedger ledger(s, o);
+  const std::vector<std::size_t>& todo = ledger.todo();
   std::atomic<bool> stopped{false};
   const auto count = static_cast<std::int64_t>(todo.size());
+  int threads = 1;
 #ifdef _OPENMP
-  out.threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+  threads = o.threads > 0 ? o.threads : omp_get_max_threads();
 #endif
-#pragma omp parallel for schedule(dynamic, 1) num_threads(out.threads)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (std::int64_t j = 0; j < count; ++j) {
     if (stopped.load() || (o.stop && o.stop())) {
       stopped = true;
       continue;
     }
     const std::size_t i = todo[static_cast<std::size_t>(j)];
-    PointResult r;
-    try {
-      r = evaluate_point(s, i);
-    } catch (const std::exception& e) {  // never a number for a point that failed
-      std::string what = std::string("error: ") + e.what();
-      for (char& c : what) {
-        if (c == ',' || c == '\t' || c == '\n' || c == '\r') c = ' ';  // one CSV cell, one line
-      }
-      r = {what, {}};
-    }
-    const std::lock_guard<std::mutex> guard(lock);
-    if (checkpoint.is_open()) {
-      checkpoint << checkpoint_line(i, r);
-      checkpoint.flush();
-    }
-    done[i] = std::move(r);
-    ++finished;
-    if (o.progress) o.progress(finished, n);
+    ledger.record(i, evaluate_point_safely(s, i));
   }
-  out.complete = !stopped.load();
-  out.results.reserve(n);
-  for (auto& d : done) out.results.push_back(d ? std::move(*d) : PointResult{"not_run", {}});
-  return out;
+  return ledger.finish(!stopped.load(), threads);
 }
 
 }  // namespace newtop::sweep

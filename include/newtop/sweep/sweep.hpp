@@ -7,9 +7,12 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <fstream>
 #include <functional>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "newtop/io/scenario.hpp"
@@ -101,5 +104,36 @@ struct SweepRun {
 /// checkpoint (17 significant digits) they are the same bits as computed. Throws InputError when
 /// the checkpoint exists without `resume`, or belongs to another sweep.
 SweepRun run_sweep(const SweepFile& s, const RunOptions& o);
+
+/// The bookkeeping of a run, for any driver (the threads of run_sweep, the ranks of MPI): the
+/// points still to compute (after reading the checkpoint back), and the results as they come, each
+/// appended to the checkpoint. record() may be called from any thread.
+class SweepLedger {
+ public:
+  /// Reads the checkpoint back when resuming (InputError as run_sweep).
+  SweepLedger(const SweepFile& s, const RunOptions& o);
+  const std::vector<std::size_t>& todo() const { return todo_; }
+  void record(std::size_t index, PointResult r);
+  /// The results by index ("not_run" where none came), with the count of workers.
+  SweepRun finish(bool complete, int workers);
+
+ private:
+  RunOptions options_;
+  std::vector<std::optional<PointResult>> done_;
+  std::vector<std::size_t> todo_;
+  std::size_t resumed_ = 0, finished_ = 0;
+  std::ofstream checkpoint_;
+  std::mutex lock_;
+};
+
+/// evaluate_point, with any exception turned into the status `error: …` (one CSV cell).
+PointResult evaluate_point_safely(const SweepFile& s, std::size_t index);
+
+/// One result as one line of text (the checkpoint's format: index, status and the values with 17
+/// significant digits) and back (nullopt for a line that is not whole); `width` is the number of
+/// quantity columns.
+std::string encode_result(std::size_t index, const PointResult& r);
+std::optional<std::pair<std::size_t, PointResult>> decode_result(const std::string& line,
+                                                                 std::size_t width);
 
 }  // namespace newtop::sweep

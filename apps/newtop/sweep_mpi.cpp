@@ -1,0 +1,134 @@
+// newtop sweep across the ranks of MPI: rank 0 hands out point indices on request and writes; the
+// others compute. A result travels as one line of the checkpoint's format (17 significant
+// digits), so it arrives as the same bits; each point is computed from its own scenario alone, so
+// the output does not depend on the number of ranks (docs/sweep.md).
+
+#include "sweep_mpi.hpp"
+
+#include <cstdint>
+#include <cstdlib>
+#include <memory>
+#include <string>
+
+#ifdef NEWTOP_WITH_MPI
+#include <mpi.h>
+#endif
+
+namespace newtop::app {
+
+#ifdef NEWTOP_WITH_MPI
+namespace {
+
+constexpr int kRequest = 1;  // a worker asks for a point (carrying the last result, if any)
+constexpr int kPoint = 2;    // rank 0 sends a point index, or kStop
+constexpr std::uint64_t kStop = ~std::uint64_t{0};
+
+bool launched_by_mpi() {
+  return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK");
+}
+
+void worker(const sweep::SweepFile& s) {
+  std::string message;  // empty: the first request
+  for (;;) {
+    MPI_Send(message.data(), static_cast<int>(message.size()), MPI_CHAR, 0, kRequest,
+             MPI_COMM_WORLD);
+    std::uint64_t index = kStop;
+    MPI_Recv(&index, 1, MPI_UINT64_T, 0, kPoint, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (index == kStop) return;
+    const auto i = static_cast<std::size_t>(index);
+    message = sweep::encode_result(i, sweep::evaluate_point_safely(s, i));
+  }
+}
+
+sweep::SweepRun coordinator(int size, const sweep::SweepFile& s, sweep::SweepLedger& ledger,
+                            const sweep::RunOptions& o) {
+  const std::size_t width = sweep::quantity_columns(s).size();
+  const std::vector<std::size_t>& todo = ledger.todo();
+  std::size_t next = 0;
+  bool stopped = false;
+  int active = size - 1;
+  while (active > 0) {
+    MPI_Status status;
+    MPI_Probe(MPI_ANY_SOURCE, kRequest, MPI_COMM_WORLD, &status);
+    int length = 0;
+    MPI_Get_count(&status, MPI_CHAR, &length);
+    std::string message(static_cast<std::size_t>(length), '\0');
+    MPI_Recv(message.data(), length, MPI_CHAR, status.MPI_SOURCE, kRequest, MPI_COMM_WORLD,
+             MPI_STATUS_IGNORE);
+    if (!message.empty()) {
+      auto r = sweep::decode_result(message, width);
+      if (!r) throw std::runtime_error("sweep: a rank sent a result that does not read back");
+      ledger.record(r->first, std::move(r->second));
+    }
+    if (!stopped && o.stop && o.stop()) stopped = true;
+    std::uint64_t index = kStop;
+    if (!stopped && next < todo.size()) index = todo[next++];
+    if (index == kStop) --active;
+    MPI_Send(&index, 1, MPI_UINT64_T, status.MPI_SOURCE, kPoint, MPI_COMM_WORLD);
+  }
+  return ledger.finish(!stopped && next == todo.size(), size - 1);
+}
+
+}  // namespace
+
+MpiSession::MpiSession() {
+  if (!launched_by_mpi()) return;
+  MPI_Init(nullptr, nullptr);
+  initialised_ = true;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+MpiSession::~MpiSession() {
+  if (initialised_) MPI_Finalize();
+}
+
+bool MpiSession::confirm(bool ok) const {
+  if (!initialised_) return ok;
+  int flag = ok ? 1 : 0;
+  MPI_Bcast(&flag, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  return flag != 0;
+}
+
+std::optional<sweep::SweepRun> run_sweep_ranks(const MpiSession& mpi, const sweep::SweepFile& s,
+                                               const sweep::RunOptions& o) {
+  std::unique_ptr<sweep::SweepLedger> ledger;
+  std::string error;
+  if (mpi.rank() == 0) {
+    try {
+      ledger = std::make_unique<sweep::SweepLedger>(s, o);
+    } catch (const InputError& e) {
+      error = e.what();
+    }
+  }
+  if (!mpi.confirm(error.empty())) throw InputError(mpi.rank() == 0 ? error : "");
+  if (mpi.rank() != 0) {
+    worker(s);
+    return std::nullopt;
+  }
+  return coordinator(mpi.size(), s, *ledger, o);
+}
+
+#else
+
+MpiSession::MpiSession() {
+  // Started by mpirun without MPI in the build, every rank would run the whole sweep and write the
+  // same files.
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
+    const char* v = std::getenv(name);
+    if (v && std::atoi(v) > 1) {
+      throw InputError("mpirun: this build has no MPI (install libopenmpi-dev and rebuild)");
+    }
+  }
+}
+MpiSession::~MpiSession() = default;
+bool MpiSession::confirm(bool ok) const { return ok; }
+
+std::optional<sweep::SweepRun> run_sweep_ranks(const MpiSession&, const sweep::SweepFile&,
+                                               const sweep::RunOptions&) {
+  throw InputError("mpirun: this build has no MPI (install libopenmpi-dev and rebuild)");
+}
+
+#endif
+
+}  // namespace newtop::app
