@@ -122,6 +122,14 @@ def analysis_figures(g: Gallery):
           [c], ["Staude cone γ·(Iγ × r0) = 0", "Staude cone on the Poisson sphere"], ["γ1"])
 
 
+def sweep_figures(g: Gallery):
+    atlas = g.file("sweep_beletsky.csv")
+    c = g.run("sweep", example("sweep_beletsky.toml"), "--quiet", "--out", atlas)[0]
+    g.add("sweep_beletsky.png", plot.figure(results.load(atlas), quantity="max_real_part"), [c],
+          ["Sweep: max_real_part over stability.omega × body.inertia[2]"],
+          ["stability.omega", "body.inertia[2]"])
+
+
 def other_figures(g: Gallery):
     c = g.json("analytic.json", "analytic", example("analytic_lagrange.toml"), "--samples", "80")
     g.add("analytic_lagrange.png", plot.figure(results.load(g.file("analytic.json"))), [c],
@@ -170,6 +178,7 @@ def make(newtop, out, chromium=None, quiet=False):
     g = Gallery(os.path.abspath(newtop), os.path.abspath(out), quiet)
     trajectory_figures(g)
     analysis_figures(g)
+    sweep_figures(g)
     other_figures(g)
     if chromium:
         viewer_screenshot(g, chromium)
