@@ -14,7 +14,7 @@ Python (numpy, matplotlib): without the extension ``import newtop`` still works 
 __version__ = "0.1.0"
 
 try:  # the compiled extension, when the build made one (PYTHONPATH=build/python)
-    from ._newtop import (Body, InputError, Model, QuadraticField, Scenario, State,  # noqa: F401
+    from ._newtop import (Body, InputError, MassModel, Model, QuadraticField, Scenario, State,  # noqa: F401
                           conserved_integrals, integrate, is_orbit_scenario, load_scenario,
                           parse_scenario)
     from ._newtop import integrals as integrals_at  # noqa: F401  (the library's, at a state)
@@ -29,7 +29,7 @@ except ModuleNotFoundError as e:  # absent is fine; present but broken is an err
 
 __all__ = ["HAVE_EXTENSION", "__version__"]
 if HAVE_EXTENSION:
-    __all__ += ["Body", "InputError", "Model", "QuadraticField", "Scenario", "State",
+    __all__ += ["Body", "InputError", "MassModel", "Model", "QuadraticField", "Scenario", "State",
                 "analytic", "conserved_integrals", "equilibria", "field", "find_integrals",
                 "integrals", "integrals_at", "integrate", "is_orbit_scenario", "libration",
                 "load_scenario", "parse_scenario", "rotations", "simulate", "stability", "sweep", "view"]

@@ -8,6 +8,9 @@ namespace newtop::python {
 /// Body, QuadraticField, Model, State, Scenario and the model's functions (model.cpp).
 void bind_model(pybind11::module_& m);
 
+/// MassModel and the exact and multipole models on it (mass_models.cpp); after bind_model.
+void bind_mass_models(pybind11::module_& m);
+
 /// integrate(): a run into numpy arrays (trajectory.cpp).
 void bind_trajectory(pybind11::module_& m);
 

@@ -11,6 +11,7 @@ PYBIND11_MODULE(_newtop, m) {
       "body's principal axes; units are the scenario's.";
   pybind11::register_exception<newtop::InputError>(m, "InputError", PyExc_ValueError);
   newtop::python::bind_model(m);
+  newtop::python::bind_mass_models(m);
   newtop::python::bind_trajectory(m);
   newtop::python::bind_command_line(m);
 }

@@ -194,3 +194,49 @@ def test_sweep_gives_one_array_per_column():
     same(r, cli)
     assert r["results"]["linearly_stable"].shape == (124,)
     assert set(r["results"]["linearly_stable"]) == {0.0, 1.0}
+
+
+def test_mass_models_from_python_are_the_scenarios():
+    box = newtop.MassModel.box([1.0, 2.0, 3.0], 100.0, [0.2, 0.1, 1.0])
+    model = newtop.Model.multipole(box, 5, 50.0, 8.0)  # examples/exact_box_multipole.toml
+    sc = newtop.load_scenario(example("exact_box_multipole.toml"))
+    assert model.kind == sc.model.kind == "multipole"
+    for gamma in ([0.0, 0.6, 0.8], [0.48, 0.6, 0.64], [1.0, 0.0, 0.0]):
+        assert model.potential(gamma) == sc.model.potential(gamma)
+        assert np.array_equal(model.moment(gamma), sc.model.moment(gamma))
+    assert np.array_equal(model.body.inertia, sc.model.body.inertia)
+
+
+def test_mass_properties_against_closed_forms():
+    a, b, c, rho = 1.0, 2.0, 3.0, 7.0
+    e = newtop.MassModel.ellipsoid([a, b, c], rho)
+    mass = 4.0 / 3.0 * np.pi * a * b * c * rho
+    assert e.kind == "ellipsoid" and e.mass == pytest.approx(mass, rel=4e-16)
+    expected = mass / 5.0 * np.diag([b * b + c * c, a * a + c * c, a * a + b * b])
+    assert np.allclose(e.inertia_tensor, expected, rtol=1e-15, atol=0)
+    p = newtop.MassModel.point_masses([1.0, 3.0], [[0.0, 0.0, 1.0], [2.0, 0.0, 0.0]])
+    assert p.kind == "points" and p.mass == 4.0
+    assert np.array_equal(p.center_of_mass, [1.5, 0.0, 0.25])
+    assert p.max_radius == 2.0
+    # The exact field of point masses (spec section 2): V(gamma) = -mu sum m_i / |R gamma + rho_i|,
+    # rho_i in the body's principal axes (P^T rho in the user's frame), summed here independently.
+    masses = [1.0, 2.0, 1.5]
+    rho = np.array([[1.0, 0.0, 0.0], [0.0, -0.5, 0.3], [0.2, 0.4, -0.7]])
+    mu, R = 3.0, 5.0
+    exact = newtop.Model.exact(newtop.MassModel.point_masses(masses, rho), mu, R)
+    P = exact.body.principal_axes
+    for gamma in (np.array([0.48, 0.6, 0.64]), np.array([1.0, 0.0, 0.0])):
+        v = -mu * sum(m / np.linalg.norm(R * gamma + P.T @ r) for m, r in zip(masses, rho))
+        assert exact.potential(gamma) == pytest.approx(v, rel=1e-15)
+
+
+def test_bad_mass_models_raise_value_error():
+    with pytest.raises(ValueError, match="density"):
+        newtop.MassModel.box([1.0, 2.0, 3.0], -1.0)
+    with pytest.raises(ValueError, match="points"):
+        newtop.MassModel.point_masses([1.0, -1.0], [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]])
+    with pytest.raises(ValueError, match="mesh"):
+        newtop.MassModel.polyhedron([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+                                    [[0, 1, 2]], 1.0)  # one triangle: not closed
+    with pytest.raises(ValueError):
+        newtop.MassModel.polyhedron_file(os.path.join(EXAMPLES, "no_such_mesh.off"), 1.0)
