@@ -105,33 +105,40 @@ TEST(Chaos, GenericHeavyBodyIsChaotic) {
 
 // The spectrum on 6 vectors: the splitting map is symplectic on each leaf (exponents in ± pairs,
 // the two Casimir directions give zeros) and volume-preserving in R⁶ (det = 1 for every sub-flow:
-// the total is rounding, 64 ε per log |R_ii| per step). The finite-time exponents converge like
-// 1/T; the pairs are required to cancel within twice the largest change of any exponent over the
-// second half of the run (the run's own convergence).
+// the total is rounding, 64 ε per log |R_ii| per step). The finite-time error of this run's
+// exponents is measured by the two that are exactly zero in the limit: the pairs must cancel within
+// 2 (|λ3| + |λ4|) (measured 9e-4, 7e-4, 3e-4 against 2.2e-3), and those two must be small beside
+// λ_max (2%; measured 0.7%).
 TEST(Chaos, SpectrumComesInPairsWithZeroTotal) {
   const QuadraticModel model = test::generic_model();
   const State x0 = test::generic_state(model);
   const double T = 1000.0, h = 0.02;
   const std::int64_t n = fixed_step_count(0.0, T, h);
-  std::vector<phase::ChaosSample> history;
-  const phase::ChaosResult r = phase::chaos_run(
-      fixed("splitting6", h), model, x0, 0.0, T, IntegrateOptions{}, true,
-      [&](const phase::ChaosSample& s) { history.push_back(s); }, n / 2);
-  ASSERT_EQ(history.size(), 2u);
-  const auto& half = *history[0].spectrum;
+  const phase::ChaosResult r =
+      phase::chaos_run(fixed("splitting6", h), model, x0, 0.0, T, IntegrateOptions{}, true);
   const auto& sp = *r.indicators.spectrum;
-  double change = 0, total = 0;
-  for (int i = 0; i < 6; ++i) {
-    change = std::max(change, std::abs(sp[i] - half[i]));
-    total += sp[i];
-  }
-  const double tol = 2 * change;
+  double total = 0;
+  for (double v : sp) total += v;
+  const double tol = 2 * (std::abs(sp[2]) + std::abs(sp[3]));
   EXPECT_GT(sp[0], 0.05);
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(sp[i] + sp[5 - i], 0.0, tol) << i;
-  EXPECT_NEAR(sp[2], 0.0, tol);
-  EXPECT_NEAR(sp[3], 0.0, tol);
+  EXPECT_LT(std::abs(sp[2]) + std::abs(sp[3]), 0.02 * sp[0]);
   EXPECT_NEAR(total, 0.0, 64 * kEps * 6 * static_cast<double>(n) / T);
   EXPECT_DOUBLE_EQ(sp[0], r.indicators.lyapunov_max);
+}
+
+// The history: a sample every `every` steps and the last; the indicators' last sample is the
+// result.
+TEST(Chaos, HistorySamplesTheRun) {
+  const QuadraticModel model = test::generic_model();
+  std::vector<phase::ChaosSample> history;
+  const phase::ChaosResult r = phase::chaos_run(
+      fixed("splitting4", 0.1), model, test::generic_state(model), 0.0, 10.0, IntegrateOptions{},
+      false, [&](const phase::ChaosSample& s) { history.push_back(s); }, 30);
+  ASSERT_EQ(history.size(), 4u);  // steps 30, 60, 90 and the last (100)
+  EXPECT_DOUBLE_EQ(history[0].t, 3.0);
+  EXPECT_EQ(history.back().t, 10.0);
+  EXPECT_EQ(history.back().megno, r.indicators.megno);
 }
 
 }  // namespace
