@@ -112,27 +112,21 @@ class TangentRk4Stepper {
   }
 };
 
-/// Calls fn(stepper) with the tangent stepper of the named method (settings validated). Throws
-/// InputError for an adaptive method (not yet supported: fixed-step methods only) and for a
-/// splitting ordering other than the axes split.
+/// Throws InputError unless the settings name a method with a tangent map: a fixed-step method
+/// (validate()'s checks too), a splitting one with the axes split of the free body.
+void check_tangent_method(const MethodSettings& settings);
+
+/// Calls fn(stepper) with the tangent stepper of the named method (check_tangent_method first).
 template <class Fn>
 decltype(auto) with_tangent_stepper(const MethodSettings& settings, Fn&& fn) {
-  validate(settings);
-  const MethodInfo& info = method_info(settings.name);
-  if (info.kind == MethodKind::splitting) {
+  check_tangent_method(settings);
+  if (method_info(settings.name).kind == MethodKind::splitting) {
     const CompositionTable& table = composition_table(settings.name);
     TangentSplittingStepper s(table, settings.ordering.value_or(default_ordering(table)));
     return fn(s);
   }
-  if (info.kind == MethodKind::fixed_rk) {
-    TangentRk4Stepper s;
-    return fn(s);
-  }
-  throw InputError(
-      "method: expected a fixed-step method for the tangent map (splitting2, "
-      "splitting4, splitting4-yoshida, splitting6, splitting8, splitting8-mclachlan, "
-      "rk4), found '" +
-      settings.name + "'");
+  TangentRk4Stepper s;
+  return fn(s);
 }
 
 }  // namespace newtop::phase
