@@ -54,7 +54,9 @@ int run(const ChaosArgs& a) {
     if (a.spectrum) file->stream() << ",lambda1,lambda2,lambda3,lambda4,lambda5,lambda6";
     file->stream() << '\n';
   }
-  const std::int64_t steps = fixed_step_count(run.t0, run.t_end, run.method.step);
+  // Fixed-step methods: at most kHistoryRows rows; adaptive ones: every accepted step.
+  const bool adaptive = method_info(run.method.name).kind == MethodKind::adaptive;
+  const std::int64_t steps = adaptive ? 1 : fixed_step_count(run.t0, run.t_end, run.method.step);
   const std::int64_t every = std::max<std::int64_t>(1, (steps + kHistoryRows - 1) / kHistoryRows);
   std::function<void(const phase::ChaosSample&)> history;
   if (file) history = [&](const phase::ChaosSample& s) { write_row(file->stream(), s); };
@@ -82,7 +84,8 @@ int run(const ChaosArgs& a) {
     j["fli"] = c.fli;
     j["t_end"] = r.outcome.t;
     j["method"] = run.method.name;
-    j["step"] = run.method.step;
+    j["step"] = adaptive ? io::Json(nullptr) : io::Json(run.method.step);
+    if (adaptive) j["tol"] = run.method.abs_tol;
     j["outcome"] = to_string(r.outcome.status);
     print_json(std::cout, j);
   } else {
@@ -94,9 +97,10 @@ int run(const ChaosArgs& a) {
       for (double v : *c.spectrum) std::cout << ' ' << format_number(v);
       std::cout << '\n';
     }
-    std::cout << "t = " << format_number(r.outcome.t) << ", method " << run.method.name << ", step "
-              << format_number(run.method.step) << ", outcome " << to_string(r.outcome.status)
-              << '\n';
+    std::cout << "t = " << format_number(r.outcome.t) << ", method " << run.method.name
+              << (adaptive ? ", tol " : ", step ")
+              << format_number(adaptive ? run.method.abs_tol : run.method.step) << ", outcome "
+              << to_string(r.outcome.status) << '\n';
     if (a.out) std::cout << "history written to " << *a.out << '\n';
   }
   return r.outcome.status == Status::finished ? kExitOk : kExitIncomplete;

@@ -30,13 +30,6 @@ void axis_flow_tangent(const Body& body, int a, double t, State& x, Tangent& V) 
 void check_tangent_method(const MethodSettings& settings) {
   validate(settings);
   const MethodInfo& info = method_info(settings.name);
-  if (info.kind == MethodKind::adaptive) {
-    throw InputError(
-        "method: expected a fixed-step method for the tangent map (splitting2, "
-        "splitting4, splitting4-yoshida, splitting6, splitting8, "
-        "splitting8-mclachlan, rk4), found '" +
-        settings.name + "'");
-  }
   if (info.kind == MethodKind::splitting) {
     const CompositionTable& table = composition_table(settings.name);
     const SplitOrdering o = settings.ordering.value_or(default_ordering(table));

@@ -43,6 +43,16 @@ TEST(ChaosCli, JsonContract) {
   EXPECT_EQ(js["spectrum"][0], js["lyapunov_max"]);
 }
 
+// The adaptive pairs integrate the variational equations: "step" is null and "tol" given.
+TEST(ChaosCli, AdaptiveMethod) {
+  const CliResult r = run("chaos " + brun() + " --t-end 20 --tol 1e-10 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["method"], "rkf78");
+  EXPECT_TRUE(j["step"].is_null());
+  EXPECT_EQ(j["tol"], 1e-10);
+}
+
 TEST(ChaosCli, HistoryCsv) {
   const fs::path csv =
       fs::temp_directory_path() / ("newtop_chaos_" + std::to_string(::getpid()) + ".csv");
@@ -67,7 +77,7 @@ TEST(ChaosCli, HistoryCsv) {
 TEST(ChaosCli, BadInputIsOneLineBeforeWork) {
   const fs::path csv =
       fs::temp_directory_path() / ("newtop_chaos_never_" + std::to_string(::getpid()) + ".csv");
-  for (const std::string args : {"--tol 1e-9", "--method dopri5 --tol 1e-9", "--step -1",
+  for (const std::string args : {"--tol -1", "--method dopri5 --step 0.1", "--step -1",
                                  "--step 0.1 --tol 1e-9", "--t-end 0", "--method nope"}) {
     const CliResult r = run("chaos " + brun() + " " + args + " --out " + csv.string());
     EXPECT_EQ(r.code, 2) << args;

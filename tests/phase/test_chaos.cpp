@@ -98,9 +98,18 @@ TEST(Chaos, GenericHeavyBodyIsChaotic) {
   EXPECT_NEAR(a.lyapunov_max, two, 0.01 * a.lyapunov_max);
   EXPECT_NEAR(a.megno, a.lyapunov_max * T / 2, 0.3 * a.lyapunov_max * T / 2);
   EXPECT_GE(a.fli, a.lyapunov_max * T * (1 - 1e-12));  // the max of ln|δ| includes its last value
-  // The RK4 variational equations give the same exponent (a second method).
+  // The variational equations of RK4 and of the adaptive pairs give the same exponent (second
+  // methods).
   const phase::ChaosSample r = indicators(model, x0, T, fixed("rk4", 0.01));
   EXPECT_NEAR(r.lyapunov_max, a.lyapunov_max, 0.01 * a.lyapunov_max);
+  for (const char* pair : {"rkf78", "dopri5"}) {
+    MethodSettings m;
+    m.name = pair;
+    m.abs_tol = m.rel_tol = 1e-11;
+    const phase::ChaosSample p = indicators(model, x0, T, m);
+    EXPECT_NEAR(p.lyapunov_max, a.lyapunov_max, 0.01 * a.lyapunov_max) << pair;
+    EXPECT_NEAR(p.megno, a.megno, 0.01 * a.megno) << pair;
+  }
 }
 
 // The spectrum on 6 vectors: the splitting map is symplectic on each leaf (exponents in ± pairs,

@@ -13,7 +13,7 @@
 #include <type_traits>
 
 #include "newtop/phase/one_step.hpp"
-#include "newtop/phase/tangent.hpp"
+#include "newtop/phase/tangent_adaptive.hpp"
 
 namespace newtop::phase {
 
@@ -78,12 +78,67 @@ Outcome integrate_tangent(S& stepper, const BasicModel<F>& model, State x, Tange
   return out;
 }
 
+/// The same with an adaptive tangent stepper: accepted steps from t0 to t1 (the last one shortened
+/// to land on t1), rejected trials retried with the suggested step, observer after each accepted
+/// step; a step below opt.min_step_factor times the span is an underflow.
+template <class S, Field F, class Obs>
+requires requires(S s, const BasicModel<F>& m, State& x, Tangent& V, double& t) {
+  s.try_step(m, x, V, t, t);
+}
+Outcome integrate_tangent_adaptive(S& stepper, const BasicModel<F>& model, State x, Tangent V,
+                                   double t0, double t1, const IntegrateOptions& opt,
+                                   Obs&& observer) {
+  check_time_span(t0, t1);
+  check_options(opt);
+  check_state(x);
+  Outcome out{Status::finished, t0, x, 0, 0, 0.0};
+  const double span = t1 - t0;
+  if (span == 0.0) return out;
+  const double dir = span > 0 ? 1.0 : -1.0;
+  double dt =
+      dir * (opt.initial_step > 0 ? opt.initial_step : stepper.initial_step(model, x, t0, t1));
+  double t = t0;
+  while (dir * (t1 - t) > 0) {
+    if (out.steps + out.rejected >= opt.max_steps) {
+      out.status = Status::step_limit;
+      return out;
+    }
+    bool last = false;
+    if (dir * (t + dt - t1) >= 0) {
+      dt = t1 - t;
+      last = true;
+    }
+    if (!(std::abs(dt) >= opt.min_step_factor * std::max(std::abs(t), std::abs(span)))) {
+      out.status = Status::step_size_underflow;
+      return out;
+    }
+    State xt = x;
+    Tangent Vt = V;
+    double tt = t;
+    const double tried = dt;
+    if (!stepper.try_step(model, xt, Vt, tt, dt) || !is_finite(xt) || !Vt.allFinite()) {
+      if (!is_finite(xt) || !Vt.allFinite() || !std::isfinite(dt)) dt = kNonFiniteShrink * tried;
+      ++out.rejected;
+      continue;
+    }
+    x = xt;
+    V = Vt;
+    t = last ? t1 : tt;
+    ++out.steps;
+    out.t = t;
+    out.state = x;
+    out.last_step = tried;
+    observer(t, x, V);
+  }
+  return out;
+}
+
 struct ChaosResult {
   Outcome outcome;
   ChaosSample indicators;
 };
 
-/// The indicators of the orbit from (t0, x0) to t1 with the named fixed-step method; `history`
+/// The indicators of the orbit from (t0, x0) to t1 with the named method; `history`
 /// receives a sample every `every` steps (and the last), `on_step(t)` is called after each step.
 template <Field F>
 ChaosResult chaos_run(const MethodSettings& method, const BasicModel<F>& model, const State& x0,
@@ -92,6 +147,7 @@ ChaosResult chaos_run(const MethodSettings& method, const BasicModel<F>& model, 
                       std::int64_t every = 1, const std::function<void(double)>& on_step = {}) {
   options.step = method.step;
   const int vectors = spectrum ? 6 : 1;
+  check_tangent_method(method);
   return with_tangent_stepper(method, [&](auto& s) {
     ChaosIndicators ind(t0, vectors);
     std::int64_t count = 0;
@@ -103,7 +159,15 @@ ChaosResult chaos_run(const MethodSettings& method, const BasicModel<F>& model, 
       if (history && ++count % every == 0) history(ind.sample());
     };
     ChaosResult r;
-    r.outcome = integrate_tangent(s, model, x0, initial_tangent(vectors), t0, t1, options, obs);
+    using S = std::decay_t<decltype(s)>;
+    if constexpr (requires(S & st, State & x, Tangent & V, double& t) {
+                    st.try_step(model, x, V, t, t);
+                  }) {
+      r.outcome =
+          integrate_tangent_adaptive(s, model, x0, initial_tangent(vectors), t0, t1, options, obs);
+    } else {
+      r.outcome = integrate_tangent(s, model, x0, initial_tangent(vectors), t0, t1, options, obs);
+    }
     r.indicators = ind.sample();
     if (history && count % every != 0) history(r.indicators);
     (void)last;

@@ -23,6 +23,12 @@ namespace newtop::phase {
 /// Tangent vectors as columns (at most 6, fixed storage).
 using Tangent = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6>;
 
+/// A fixed-step tangent stepper: step(model, x, V, h) advances x and its tangent vectors V by h.
+template <class S, class M>
+concept TangentFixedStepper = requires(S s, const M& model, State& x, Tangent& V, double h) {
+  s.step(model, x, V, h);
+};
+
 /// [v]×, the matrix of v × ·.
 inline Mat3 cross_matrix(const Vec3& v) {
   Mat3 c;
@@ -112,21 +118,8 @@ class TangentRk4Stepper {
   }
 };
 
-/// Throws InputError unless the settings name a method with a tangent map: a fixed-step method
-/// (validate()'s checks too), a splitting one with the axes split of the free body.
+/// Throws InputError unless the settings name a method with a tangent map (validate()'s checks
+/// too): a splitting method needs the axes split of the free body.
 void check_tangent_method(const MethodSettings& settings);
-
-/// Calls fn(stepper) with the tangent stepper of the named method (check_tangent_method first).
-template <class Fn>
-decltype(auto) with_tangent_stepper(const MethodSettings& settings, Fn&& fn) {
-  check_tangent_method(settings);
-  if (method_info(settings.name).kind == MethodKind::splitting) {
-    const CompositionTable& table = composition_table(settings.name);
-    TangentSplittingStepper s(table, settings.ordering.value_or(default_ordering(table)));
-    return fn(s);
-  }
-  TangentRk4Stepper s;
-  return fn(s);
-}
 
 }  // namespace newtop::phase
