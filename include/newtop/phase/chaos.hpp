@@ -151,11 +151,9 @@ ChaosResult chaos_run(const MethodSettings& method, const BasicModel<F>& model, 
   return with_tangent_stepper(method, [&](auto& s) {
     ChaosIndicators ind(t0, vectors);
     std::int64_t count = 0;
-    double last = t0;
     auto obs = [&](double t, const State&, Tangent& V) {
       if (on_step) on_step(t);
       ind(t, V);
-      last = t;
       if (history && ++count % every == 0) history(ind.sample());
     };
     ChaosResult r;
@@ -170,7 +168,6 @@ ChaosResult chaos_run(const MethodSettings& method, const BasicModel<F>& model, 
     }
     r.indicators = ind.sample();
     if (history && count % every != 0) history(r.indicators);
-    (void)last;
     return r;
   });
 }

@@ -136,13 +136,13 @@ struct SectionObserver {
       }
       return;
     }
-    if (kept(g_prev, gx)) locate(t, x, gx);
+    if (kept(g_prev, gx)) locate(t, x);
     t_prev = t;
     x_prev = x;
     g_prev = gx;
   }
 
-  void locate(double t, const State& x, double gx) {
+  void locate(double t, const State& x) {
     const double h = t - t_prev;
     auto f = [&](double tau) { return g(map(model, x_prev, tau)); };
     const double f_end = f(h);
@@ -150,7 +150,6 @@ struct SectionObserver {
       record(t, x);  // no bracket in the map's own values (g at round-off): the step's end
       return;
     }
-    (void)gx;
     std::uintmax_t iters = 100;
     const auto tol = boost::math::tools::eps_tolerance<double>(std::numeric_limits<double>::digits);
     const auto r = boost::math::tools::toms748_solve(f, 0.0, h, g_prev, f_end, tol, iters);
