@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "command.hpp"
+#include "integration_options.hpp"
 #include "interrupt.hpp"
 #include "newtop/exact/multipole.hpp"
 #include "newtop/integrate/methods.hpp"
@@ -63,25 +64,6 @@ struct DriftTracker {
   double max_m = 0;
 };
 
-/// The time arguments and, for fixed-step methods, the step count (a run that could never reach
-/// t_end is bad input, not an outcome).
-void check_span(const io::Scenario& sc, const RunPlan& p) {
-  check_time_span(p.t0, p.t_end);
-  if (p.t_end == p.t0) {
-    throw InputError("t_end: expected a time different from t0 = " + format_number(p.t0) +
-                     ", found " + format_number(p.t_end) + " (a run of no length)");
-  }
-  if (method_info(p.method.name).kind == MethodKind::adaptive) return;
-  const std::int64_t n = fixed_step_count(p.t0, p.t_end, p.method.step);
-  if (n > p.options.max_steps) {
-    throw InputError("step: the run from t0 = " + format_number(p.t0) +
-                     " to t_end = " + format_number(p.t_end) + " at step " +
-                     format_number(p.method.step) + " takes " + std::to_string(n) +
-                     " steps, more than max_steps = " + std::to_string(p.options.max_steps) +
-                     (sc.integrate.max_steps ? " ([integrate] max_steps)" : " (the default)"));
-  }
-}
-
 RunPlan make_plan(const SimulateArgs& a, const io::Scenario& sc) {
   RunPlan p;
   const io::IntegrateOverrides ov{a.method, a.step, a.tol, a.t_end};
@@ -93,7 +75,7 @@ RunPlan make_plan(const SimulateArgs& a, const io::Scenario& sc) {
     p.t_end = io::resolve_t_end(sc, ov);
   }
   if (sc.integrate.max_steps) p.options.max_steps = *sc.integrate.max_steps;
-  check_span(sc, p);
+  check_run_span(sc, p.method, p.t0, p.t_end, p.options);
   p.out_path = a.out ? a.out : sc.output.file;
   const bool cli_rows = a.every || a.dt_out || a.times;  // the command line overrides [output]
   p.every = a.every.value_or(cli_rows ? 1 : sc.output.every);
@@ -236,14 +218,7 @@ const RegisterCommand reg{Command{
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<SimulateArgs>();
       sub.add_option("scenario", a->scenario, "scenario file (TOML)")->required();
-      sub.add_option("--t-end", a->t_end, "final time (overrides [integrate] t_end)");
-      sub.add_option("--method", a->method,
-                     "method: splitting2, splitting4, splitting4-yoshida, splitting6, splitting8, "
-                     "splitting8-mclachlan, rk4, dopri5, rkf78");
-      auto* step = sub.add_option("--step", a->step, "fixed step (selects splitting6 by default)");
-      auto* tol = sub.add_option("--tol", a->tol,
-                                 "absolute and relative tolerance (selects rkf78 by default)");
-      step->excludes(tol);
+      add_integration_options(sub, a->t_end, a->method, a->step, a->tol);
       sub.add_option("--out", a->out, "write the trajectory to this CSV file");
       auto* every =
           sub.add_option("--every", a->every, "write every N-th step to the CSV (default 1)");

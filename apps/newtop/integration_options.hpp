@@ -1,0 +1,43 @@
+#pragma once
+// The integration options every integrating command shares with `simulate`: --t-end, --method,
+// --step, --tol over the scenario's [integrate], with the same defaults and the same errors.
+
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+
+#include "newtop/integrate/methods.hpp"
+#include "newtop/io/scenario.hpp"
+
+namespace newtop::app {
+
+struct IntegrationArgs {
+  std::optional<double> t_end, step, tol;
+  std::optional<std::string> method;
+  io::IntegrateOverrides overrides() const { return {method, step, tol, t_end}; }
+};
+
+/// Adds --t-end, --method, --step and --tol (--step excludes --tol).
+void add_integration_options(CLI::App& sub, std::optional<double>& t_end,
+                             std::optional<std::string>& method, std::optional<double>& step,
+                             std::optional<double>& tol);
+inline void add_integration_options(CLI::App& sub, IntegrationArgs& a) {
+  add_integration_options(sub, a.t_end, a.method, a.step, a.tol);
+}
+
+/// The run from the scenario's t0 to t_end with `method`: non-finite times, a run of no length,
+/// and a fixed-step run of more steps than max_steps are bad input (InputError).
+void check_run_span(const io::Scenario& sc, const MethodSettings& method, double t0, double t_end,
+                    const IntegrateOptions& options);
+
+/// A resolved run: the method, t0, t_end and the driver's options ([integrate] max_steps).
+struct RunSettings {
+  MethodSettings method;
+  double t0 = 0, t_end = 0;
+  IntegrateOptions options;
+};
+
+/// resolve_method, resolve_t_end and check_run_span, as `simulate` does them.
+RunSettings resolve_run(const io::Scenario& sc, const IntegrationArgs& a);
+
+}  // namespace newtop::app

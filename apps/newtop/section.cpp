@@ -1,0 +1,201 @@
+// newtop section SCENARIO.toml --surface EXPR: Poincaré sections (docs/section.md).
+
+#include "newtop/phase/section.hpp"
+
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "command.hpp"
+#include "integration_options.hpp"
+#include "interrupt.hpp"
+#include "newtop/io/orbit_scenario.hpp"
+#include "newtop/io/output.hpp"
+#include "summary.hpp"
+
+namespace newtop::app {
+namespace {
+
+struct SectionArgs {
+  std::string scenario, surface, direction = "up";
+  IntegrationArgs integration;
+  std::int64_t crossings = 1000;
+  std::optional<int> orbits;
+  std::optional<double> energy, area;
+  std::optional<std::string> out;
+  bool json = false;
+};
+
+/// The coordinates of a crossing on the section: Andoyer–Deprit, and for a plane γ_k = c the
+/// momenta conjugate to the two other components of γ.
+io::Json coords_json(const State& x, int plane_axis) {
+  const phase::AndoyerDeprit ad = phase::andoyer_deprit(x);
+  io::Json c;
+  c["l"] = ad.l;
+  c["L_over_G"] = ad.G > 0 ? ad.L / ad.G : 0.0;
+  c["g"] = ad.g;
+  c["G"] = ad.G;
+  if (plane_axis >= 0) {
+    const Vec3 p = phase::gamma_momentum(x);
+    for (int d = 1; d <= 2; ++d) {
+      const int i = (plane_axis + d) % 3;
+      c["gamma" + std::to_string(i + 1)] = x.gamma[i];
+      c["p_gamma" + std::to_string(i + 1)] = p[i];
+    }
+  }
+  return c;
+}
+
+void write_csv(std::ostream& os, const std::vector<phase::Crossing>& cs, const Body& body,
+               int plane_axis) {
+  os << "orbit,t,p,q,r,gamma1,gamma2,gamma3,l,L_over_G,g,G";
+  std::array<int, 2> other{(plane_axis + 1) % 3, (plane_axis + 2) % 3};
+  if (plane_axis >= 0) {
+    for (int i : other) os << ",p_gamma" << i + 1;
+  }
+  os << '\n';
+  for (const phase::Crossing& c : cs) {
+    const Vec3 w = omega(body, c.x);
+    const phase::AndoyerDeprit ad = phase::andoyer_deprit(c.x);
+    os << c.orbit << ',' << format_number(c.t);
+    for (int i = 0; i < 3; ++i) os << ',' << format_number(w[i]);
+    for (int i = 0; i < 3; ++i) os << ',' << format_number(c.x.gamma[i]);
+    os << ',' << format_number(ad.l) << ',' << format_number(ad.G > 0 ? ad.L / ad.G : 0.0) << ','
+       << format_number(ad.g) << ',' << format_number(ad.G);
+    if (plane_axis >= 0) {
+      const Vec3 p = phase::gamma_momentum(c.x);
+      for (int i : other) os << ',' << format_number(p[i]);
+    }
+    os << '\n';
+  }
+}
+
+int run(const SectionArgs& a) {
+  // Every argument is checked before any work.
+  const phase::Surface surface = phase::parse_surface(a.surface);
+  const phase::Direction direction = phase::parse_direction(a.direction);
+  if (a.crossings < 1) {
+    throw InputError("--crossings: expected an integer >= 1, found " + std::to_string(a.crossings));
+  }
+  if (io::is_orbit_scenario(a.scenario)) {
+    throw InputError(
+        "scenario: expected a body scenario ([body], [field], [initial]), found an "
+        "orbit scenario ([orbit])");
+  }
+  const io::Scenario sc = io::load_scenario(a.scenario);
+  const RunSettings run = resolve_run(sc, a.integration);
+  std::optional<phase::Levels> levels;
+  std::vector<State> starts{sc.initial};
+  if (a.orbits) {
+    levels = phase::Levels{a.energy.value_or(energy(sc.model, sc.initial)),
+                           a.area.value_or(area(sc.initial))};
+    starts = phase::seed_orbits(sc.model, surface, *levels, *a.orbits, direction);
+  }
+  std::unique_ptr<io::AtomicFile> file;
+  if (a.out) file = std::make_unique<io::AtomicFile>(*a.out, sc.input_files);
+
+  const InterruptGuard guard;
+  phase::SectionSettings settings{direction, a.crossings, a.orbits.has_value()};
+  std::vector<phase::Crossing> crossings;
+  phase::IntegralsDrift drift;
+  bool all_by_crossings = true;
+  Status status = Status::finished;
+  double residual = 0.0, relative = 0.0;
+  try {
+    visit_model(sc.model, [&](const auto& model) {
+      const phase::SurfaceFunction g(surface, model.body);
+      for (std::size_t k = 0; k < starts.size(); ++k) {
+        phase::IntegralsDrift orbit_drift;  // each orbit against its own start
+        const phase::SectionRun r = phase::section_orbit(
+            run.method, model, g, settings, static_cast<int>(k), starts[k], run.t0, run.t_end,
+            run.options, crossings, orbit_drift, throw_if_interrupted);
+        drift.merge(orbit_drift);
+        all_by_crossings = all_by_crossings && r.by_crossings;
+        if (r.outcome.status != Status::finished) status = r.outcome.status;
+        residual = std::max(residual, r.max_residual);
+        relative = std::max(relative, r.max_relative);
+      }
+    });
+  } catch (const Interrupted& e) {
+    std::cerr << "newtop: interrupted by " << signal_name(e.signal)
+              << " at t = " << format_number(e.t)
+              << (a.out ? "; the output file was not written" : "") << '\n';
+    return 128 + e.signal;
+  }
+  const int plane_axis = phase::gamma_plane_axis(surface);
+  if (file) {
+    write_csv(file->stream(), crossings, sc.model.body(), plane_axis);
+    file->commit();
+  }
+  const bool empty = starts.empty();
+  if (empty) {
+    std::cerr << "newtop: warning: the level energy = " << format_number(levels->energy)
+              << ", area = " << format_number(levels->area) << " does not meet the surface '"
+              << surface.text << "': no orbit\n";
+  }
+  const std::string stopped_by = all_by_crossings && !empty ? "crossings" : "t_end";
+  if (a.json) {
+    io::Json j;
+    j["surface"] = surface.text;
+    j["direction"] = phase::to_string(direction);
+    io::Json list = io::Json::array();
+    for (const phase::Crossing& c : crossings) {
+      list.push_back({{"orbit", c.orbit},
+                      {"t", c.t},
+                      {"omega", io::to_json(omega(sc.model.body(), c.x))},
+                      {"gamma", io::to_json(c.x.gamma)},
+                      {"m", io::to_json(c.x.m)},
+                      {"coords", coords_json(c.x, plane_axis)}});
+    }
+    j["crossings"] = list;
+    j["count"] = crossings.size();
+    j["stopped_by"] = stopped_by;
+    j["max_surface_residual"] = residual;
+    j["integrals_drift"] = drift.started ? io::to_json(drift.max_drift) : io::Json::object();
+    j["method"] = run.method.name;
+    j["outcome"] = to_string(status);
+    if (levels) {
+      j["levels"] = {{"energy", levels->energy},
+                     {"area", levels->area},
+                     {"orbits", starts.size()},
+                     {"empty", empty}};
+    }
+    print_json(std::cout, j);
+  } else {
+    std::cout << "surface " << surface.text << " (" << phase::to_string(direction)
+              << "): " << crossings.size() << " crossings of " << starts.size()
+              << " orbit(s), stopped by " << stopped_by
+              << "\nmax |g| at the crossings = " << format_number(residual) << " ("
+              << format_number(relative) << " of the size of its terms)\nmethod " << run.method.name
+              << ", outcome " << to_string(status) << '\n';
+    if (a.out) std::cout << "crossings written to " << *a.out << '\n';
+  }
+  return status == Status::finished ? kExitOk : kExitIncomplete;
+}
+
+const RegisterCommand reg{Command{
+    "section",
+    "Poincare section: the crossings of the trajectory with a surface g(omega, gamma) = 0",
+    [](CLI::App& sub) -> std::function<int()> {
+      auto a = std::make_shared<SectionArgs>();
+      sub.add_option("scenario", a->scenario, "scenario file (TOML)")->required();
+      sub.add_option("--surface", a->surface,
+                     "affine surface, e.g. 'gamma3 = 0' or 'gamma1 + 0.5*gamma2 = 0.1' "
+                     "(omega1..3, m1..3, gamma1..3)")
+          ->required();
+      sub.add_option("--direction", a->direction, "up (default), down or both");
+      sub.add_option("--crossings", a->crossings,
+                     "stop after N crossings per orbit (default 1000)");
+      auto* orbits = sub.add_option("--orbits", a->orbits,
+                                    "phase portrait: K orbits seeded on the surface (surface of "
+                                    "gamma alone) on the scenario's energy and area levels");
+      sub.add_option("--energy", a->energy, "energy level of the seeded orbits")->needs(orbits);
+      sub.add_option("--area", a->area, "area level m.gamma of the seeded orbits")->needs(orbits);
+      add_integration_options(sub, a->integration);
+      sub.add_option("--out", a->out, "write the crossings to this CSV file");
+      sub.add_flag("--json", a->json, "print one JSON object instead of the summary");
+      return [a] { return run(*a); };
+    }}};
+
+}  // namespace
+}  // namespace newtop::app

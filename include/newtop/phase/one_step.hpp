@@ -1,0 +1,46 @@
+#pragma once
+/// \file
+/// The one-step map x ↦ Φ_h(x) of a stepper of the conformance suite, for any h: a fixed-step
+/// method's own step; for an embedded Runge–Kutta pair, one step of the pair's propagated formula
+/// with no error control (the formula every accepted step of the adaptive run applies). Event
+/// location lands on a surface with it, so that a located point lies on the method's own solution.
+
+#include "newtop/integrate/runge_kutta.hpp"
+
+namespace newtop::phase {
+
+/// A fixed-step method: a copy of the stepper, stepping by h.
+template <class S>
+class OneStepMap {
+ public:
+  explicit OneStepMap(const S& s) : s_(s) {}
+  template <Field F>
+  State operator()(const BasicModel<F>& model, State x, double h) {
+    s_.step(model, x, h);
+    return x;
+  }
+
+ private:
+  S s_;
+};
+
+/// An embedded Runge–Kutta pair: one step of its formula, f(x) evaluated afresh (never a stale
+/// first-same-as-last value).
+template <class E, int Order>
+class OneStepMap<EmbeddedRkStepper<E, Order>> {
+ public:
+  explicit OneStepMap(const EmbeddedRkStepper<E, Order>&) {}
+  template <Field F>
+  State operator()(const BasicModel<F>& model, const State& x, double h) {
+    const OdeSystem<F> sys{&model};
+    OdeState y = to_ode(x), dydt;
+    sys(y, dydt, 0.0);
+    e_.do_step(sys, y, dydt, 0.0, h);
+    return from_ode(y);
+  }
+
+ private:
+  E e_;
+};
+
+}  // namespace newtop::phase

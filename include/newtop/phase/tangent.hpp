@@ -1,0 +1,125 @@
+#pragma once
+/// \file
+/// The tangent map of the integrators (docs/chaos.md): a step carries, beside the state x = (m, γ),
+/// tangent vectors δx = (δm, δγ) ∈ R⁶ (the columns of a 6 × n matrix, n ≤ 6) through the
+/// derivative of the map actually iterated.
+///
+/// - Splitting methods: the exact derivative of each sub-flow of the composition (splitting.hpp).
+///   A rotation about the body axis e_a by φ = t (m_a − k_a)/I_a, x' = R_a(φ) x for x = m and
+///   x = γ, has δx' = R_a(φ) δx + (x' × e_a) (t/I_a) δm_a (dR/dφ x = x' × e_a). The kick
+///   m' = m + t L(γ) has δm' = δm + t (∂L/∂γ) δγ, δγ' = δγ, with ∂L/∂γ = [γ]× ∂²V/∂γ² − [∂V/∂γ]×
+///   from each field's Hessian (moment_jacobian).
+/// - Runge–Kutta methods: the variational equations δẋ = Df(x) δx integrated with the state by the
+///   same formula.
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "newtop/integrate/methods.hpp"
+
+namespace newtop::phase {
+
+/// Tangent vectors as columns (at most 6, fixed storage).
+using Tangent = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6>;
+
+/// A fixed-step tangent stepper: step(model, x, V, h) advances x and its tangent vectors V by h.
+template <class S, class M>
+concept TangentFixedStepper = requires(S s, const M& model, State& x, Tangent& V, double h) {
+  s.step(model, x, V, h);
+};
+
+/// [v]×, the matrix of v × ·.
+inline Mat3 cross_matrix(const Vec3& v) {
+  Mat3 c;
+  c << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return c;
+}
+
+/// Df(x): the Jacobian of the Euler–Poisson vector field (spec §4) in the order (m, γ):
+/// ∂ṁ/∂m = [m]× I⁻¹ − [ω]×, ∂ṁ/∂γ = ∂L/∂γ, ∂γ̇/∂m = [γ]× I⁻¹, ∂γ̇/∂γ = −[ω]×.
+template <Field F>
+Eigen::Matrix<double, 6, 6> rhs_jacobian(const BasicModel<F>& model, const State& x) {
+  const Vec3 w = omega(model.body, x);
+  const Mat3 inv_i = model.body.inertia().cwiseInverse().asDiagonal();
+  Eigen::Matrix<double, 6, 6> J;
+  J.topLeftCorner<3, 3>() = cross_matrix(x.m) * inv_i - cross_matrix(w);
+  J.topRightCorner<3, 3>() = moment_jacobian(model, x.gamma);
+  J.bottomLeftCorner<3, 3>() = cross_matrix(x.gamma) * inv_i;
+  J.bottomRightCorner<3, 3>() = -cross_matrix(w);
+  return J;
+}
+
+/// The rotation sub-flow about body axis a over time t, with its derivative applied to V.
+void axis_flow_tangent(const Body& body, int a, double t, State& x, Tangent& V);
+
+/// The kick sub-flow over t, with its derivative applied to V.
+template <Field F>
+void kick_tangent(const BasicModel<F>& model, double t, State& x, Tangent& V) {
+  const Mat3 J = moment_jacobian(model, x.gamma);
+  V.topRows<3>() += t * (J * V.bottomRows<3>());
+  x.m += t * moment(model, x.gamma);
+}
+
+/// A splitting method with its tangent map: the composition of SplittingStepper (the same
+/// coefficients and working axes), in the body frame. Only the split of the free body into axis
+/// rotations (FreeBodySplit::axes, the default of every composition table); the spin and exact
+/// splits are refused (InputError).
+class TangentSplittingStepper {
+ public:
+  TangentSplittingStepper(const CompositionTable& table, const SplitOrdering& ordering);
+  int order() const { return order_; }
+  template <Field F>
+  void step(const BasicModel<F>& model, State& x, Tangent& V, double h) {
+    if (model.body.inertia() != inertia_key_) {
+      axes_ = split_frame(model.body, ordering_).axis;
+      inertia_key_ = model.body.inertia();
+    }
+    const std::size_t s = c_.a.size();
+    for (std::size_t i = 0; i < s; ++i) {
+      if (c_.b[i] != 0.0) kick_tangent(model, c_.b[i] * h, x, V);
+      free_body(model.body, c_.a[i] * h, x, V);
+    }
+    if (c_.b[s] != 0.0) kick_tangent(model, c_.b[s] * h, x, V);
+  }
+  /// T(t) = R_i(t/2) R_j(t/2) R_k(t) R_j(t/2) R_i(t/2), (i, j, k) the split's axes.
+  void free_body(const Body& body, double t, State& x, Tangent& V) const;
+
+ private:
+  int order_;
+  SplitOrdering ordering_;
+  SplittingCoefficients c_;
+  Vec3 inertia_key_ = Vec3::Constant(NAN);
+  std::array<int, 3> axes_{0, 1, 2};
+};
+
+/// Classical RK4 on the state and the variational equations together.
+class TangentRk4Stepper {
+ public:
+  int order() const { return 4; }
+  template <Field F>
+  void step(const BasicModel<F>& model, State& x, Tangent& V, double h) const {
+    auto f = [&](const State& y, const Tangent& W, State& dy, Tangent& dW) {
+      dy = rhs(model, y);
+      dW = rhs_jacobian(model, y) * W;
+    };
+    State k1, k2, k3, k4;
+    Tangent l1, l2, l3, l4;
+    auto add = [](const State& y, double c, const State& k) {
+      return State{y.m + c * k.m, y.gamma + c * k.gamma};
+    };
+    f(x, V, k1, l1);
+    f(add(x, h / 2, k1), V + (h / 2) * l1, k2, l2);
+    f(add(x, h / 2, k2), V + (h / 2) * l2, k3, l3);
+    f(add(x, h, k3), V + h * l3, k4, l4);
+    x.m += (h / 6) * (k1.m + 2 * k2.m + 2 * k3.m + k4.m);
+    x.gamma += (h / 6) * (k1.gamma + 2 * k2.gamma + 2 * k3.gamma + k4.gamma);
+    V += (h / 6) * (l1 + 2 * l2 + 2 * l3 + l4);
+  }
+};
+
+/// Throws InputError unless the settings name a method with a tangent map (validate()'s checks
+/// too): a splitting method needs the axes split of the free body.
+void check_tangent_method(const MethodSettings& settings);
+
+}  // namespace newtop::phase

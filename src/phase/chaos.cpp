@@ -1,0 +1,65 @@
+// Chaos indicators: renormalisation and accumulation (chaos.hpp).
+
+#include "newtop/phase/chaos.hpp"
+
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+
+namespace newtop::phase {
+
+ChaosIndicators::ChaosIndicators(double t0, int vectors) : t0_(t0), t_prev_(t0), n_(vectors) {}
+
+Tangent initial_tangent(int vectors) {
+  if (vectors == 1) return Tangent::Constant(6, 1, 1.0 / std::sqrt(6.0));
+  return Tangent::Identity(6, vectors);
+}
+
+void ChaosIndicators::operator()(double t, Tangent& V) {
+  double delta = 0;  // ln(|δ_n|/|δ_{n−1}|) of the first vector
+  if (n_ == 1) {
+    const double norm = V.col(0).norm();
+    delta = std::log(norm);
+    V.col(0) /= norm;
+    log_r_[0] += delta;
+  } else {
+    // Benettin: V = QR, the logs of |R_ii| accumulate, Q (signs fixed so that R_ii > 0) goes on.
+    const Eigen::HouseholderQR<Eigen::Matrix<double, 6, 6>> qr(V.leftCols(6));
+    const Eigen::Matrix<double, 6, 6> R = qr.matrixQR().triangularView<Eigen::Upper>();
+    Eigen::Matrix<double, 6, 6> Q = qr.householderQ();
+    for (int i = 0; i < 6; ++i) {
+      const double r = R(i, i);
+      log_r_[i] += std::log(std::abs(r));
+      if (r < 0) Q.col(i) = -Q.col(i);
+    }
+    V = Q;
+    delta = std::log(std::abs(R(0, 0)));
+  }
+  log_norm_ += delta;
+  fli_ = std::max(fli_, log_norm_);
+  const double s0 = t_prev_ - t0_, s1 = t - t0_;
+  s_ += 0.5 * (s0 + s1) * delta;  // ∫ s d ln|δ| over the step, s at the step's middle
+  const double y = s1 > 0 ? 2 * s_ / s1 : 0.0;
+  mean_integral_ += 0.5 * (y_prev_ + y) * (s1 - s0);
+  y_prev_ = y;
+  t_prev_ = t;
+}
+
+ChaosSample ChaosIndicators::sample() const {
+  ChaosSample c;
+  c.t = t_prev_;
+  const double s = t_prev_ - t0_;
+  if (s <= 0) return c;
+  c.lyapunov_max = log_norm_ / s;
+  c.megno_y = y_prev_;
+  c.megno = mean_integral_ / s;
+  c.fli = fli_;
+  if (n_ == 6) {
+    std::array<double, 6> sp;
+    for (int i = 0; i < 6; ++i) sp[i] = log_r_[i] / s;
+    c.spectrum = sp;
+  }
+  return c;
+}
+
+}  // namespace newtop::phase

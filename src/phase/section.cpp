@@ -1,0 +1,138 @@
+// Poincaré sections: directions, coordinates on the section, the integrals' drift and the seeded
+// orbits of a phase portrait (section.hpp).
+
+#include "newtop/phase/section.hpp"
+
+#include <numbers>
+
+#include "newtop/model/model.hpp"
+
+namespace newtop::phase {
+
+const char* to_string(Direction d) {
+  switch (d) {
+    case Direction::up:
+      return "up";
+    case Direction::down:
+      return "down";
+    default:
+      return "both";
+  }
+}
+
+Direction parse_direction(std::string_view s, std::string_view field) {
+  if (s == "up") return Direction::up;
+  if (s == "down") return Direction::down;
+  if (s == "both") return Direction::both;
+  throw InputError(std::string(field) + ": expected up, down or both, found '" + std::string(s) +
+                   "'");
+}
+
+namespace {
+
+/// The angle from a to b about the axis k (k ⟂ a, b); 0 when a or b vanishes.
+double angle_about(const Vec3& a, const Vec3& b, const Vec3& k) {
+  if (a.squaredNorm() == 0.0 || b.squaredNorm() == 0.0) return 0.0;
+  return std::atan2(k.dot(a.cross(b)), a.dot(b));
+}
+
+}  // namespace
+
+AndoyerDeprit andoyer_deprit(const State& x) {
+  AndoyerDeprit v;
+  v.G = x.m.norm();
+  v.L = x.m[2];
+  v.H = x.m.dot(x.gamma);
+  v.l = (x.m[0] == 0.0 && x.m[1] == 0.0) ? 0.0 : std::atan2(x.m[0], x.m[1]);
+  if (v.G > 0) {
+    const Vec3 k = x.m / v.G;
+    v.g = angle_about(x.gamma.cross(k), Vec3::UnitZ().cross(k), k);
+  }
+  return v;
+}
+
+int gamma_plane_axis(const Surface& s) {
+  if (!s.of_gamma_only()) return -1;
+  int axis = -1;
+  for (int i = 0; i < 3; ++i) {
+    if (s.a_gamma[i] == 0.0) continue;
+    if (axis >= 0) return -1;
+    axis = i;
+  }
+  return axis;
+}
+
+void IntegralsDrift::observe(const IntegralValues& v) {
+  if (!started) {
+    started = true;
+    initial = v;
+    max_drift = v;
+    max_drift.energy = max_drift.area = max_drift.geometric = 0.0;
+    if (max_drift.brun) max_drift.brun = 0.0;
+    if (max_drift.lagrange) max_drift.lagrange = 0.0;
+    return;
+  }
+  auto upd = [](double& m, double a, double b) { m = std::max(m, std::abs(a - b)); };
+  upd(max_drift.energy, v.energy, initial.energy);
+  upd(max_drift.area, v.area, initial.area);
+  upd(max_drift.geometric, v.geometric, initial.geometric);
+  if (v.brun && initial.brun) upd(*max_drift.brun, *v.brun, *initial.brun);
+  if (v.lagrange && initial.lagrange) upd(*max_drift.lagrange, *v.lagrange, *initial.lagrange);
+}
+
+void IntegralsDrift::merge(const IntegralsDrift& other) {
+  if (!other.started) return;
+  if (!started) {
+    *this = other;
+    return;
+  }
+  auto upd = [](double& m, double v) { m = std::max(m, v); };
+  upd(max_drift.energy, other.max_drift.energy);
+  upd(max_drift.area, other.max_drift.area);
+  upd(max_drift.geometric, other.max_drift.geometric);
+  if (max_drift.brun && other.max_drift.brun) upd(*max_drift.brun, *other.max_drift.brun);
+  if (max_drift.lagrange && other.max_drift.lagrange) {
+    upd(*max_drift.lagrange, *other.max_drift.lagrange);
+  }
+}
+
+std::vector<State> seed_orbits(const Model& model, const Surface& surface, const Levels& levels,
+                               int K, Direction direction) {
+  if (!surface.of_gamma_only()) {
+    throw InputError(
+        "--orbits: expected a surface of gamma alone (a plane through the Poisson "
+        "sphere), found '" +
+        surface.text + "'");
+  }
+  if (K < 1) throw InputError("--orbits: expected an integer >= 1, found " + std::to_string(K));
+  const Body& body = model.body();
+  const double norm = surface.a_gamma.norm();
+  const Vec3 n = surface.a_gamma / norm;
+  const double dist = surface.c / norm;  // the plane n·γ = dist
+  std::vector<State> seeds;
+  if (!(std::abs(dist) < 1.0)) return seeds;  // the plane misses the sphere: an empty level
+  const double rho = std::sqrt((1.0 - dist) * (1.0 + dist));
+  // An orthonormal basis (e1, e2) of the plane normal to n.
+  const Vec3 e1 = n.unitOrthogonal(), e2 = n.cross(e1);
+  const Vec3 inv_i = body.inertia().cwiseInverse();
+  for (int j = 0; j < K; ++j) {
+    const double phi = 2.0 * std::numbers::pi * (j + 0.5) / K;
+    Vec3 gamma = dist * n + rho * (std::cos(phi) * e1 + std::sin(phi) * e2);
+    gamma.normalize();
+    const Vec3 t = n.cross(gamma).normalized();  // along the circle; ⟂ γ
+    // ½(u + a t)·I⁻¹(u + a t) + V(γ) = h with u = f γ − k: α a² + 2β a + (κ − h) = 0.
+    const Vec3 u = levels.area * gamma - body.gyrostat();
+    const double alpha = 0.5 * t.dot(inv_i.cwiseProduct(t));
+    const double beta = 0.5 * t.dot(inv_i.cwiseProduct(u));
+    const double kappa = 0.5 * u.dot(inv_i.cwiseProduct(u)) + potential(model, gamma);
+    const double disc = beta * beta - alpha * (kappa - levels.energy);
+    if (!(disc >= 0.0)) continue;
+    // dg/dt = ω·(a_γ × γ) = |a_γ| ρ' (2β + 2α a) has the sign of ±√disc at the roots.
+    const double root = std::sqrt(disc);
+    const double a = (direction == Direction::down ? -beta - root : -beta + root) / alpha;
+    seeds.push_back({u + body.gyrostat() + a * t, gamma});
+  }
+  return seeds;
+}
+
+}  // namespace newtop::phase

@@ -1,0 +1,89 @@
+// newtop chaos end to end: the JSON keys of the issue, the history CSV, bad input in one line.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "support/cli.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using newtop::test::CliResult;
+
+CliResult run(const std::string& args) {
+  return newtop::test::run_newtop(args, newtop::test::Stderr::separate);
+}
+
+std::string brun() { return newtop::test::example_path("brun.toml"); }
+
+TEST(ChaosCli, JsonContract) {
+  const CliResult r = run("chaos " + brun() + " --t-end 20 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* k :
+       {"lyapunov_max", "spectrum", "megno", "fli", "t_end", "method", "step", "outcome"}) {
+    EXPECT_TRUE(j.contains(k)) << k;
+  }
+  EXPECT_TRUE(j["spectrum"].is_null());
+  EXPECT_EQ(j["t_end"], 20.0);
+  EXPECT_EQ(j["method"], "splitting6");
+  EXPECT_EQ(j["step"], 0.01);
+  EXPECT_EQ(j["outcome"], "finished");
+  const CliResult s = run("chaos " + brun() + " --t-end 20 --spectrum --method rk4 --json");
+  ASSERT_EQ(s.code, 0) << s.err;
+  const auto js = nlohmann::json::parse(s.out);
+  EXPECT_EQ(js["spectrum"].size(), 6u);
+  EXPECT_EQ(js["method"], "rk4");
+  EXPECT_EQ(js["spectrum"][0], js["lyapunov_max"]);
+}
+
+// The adaptive pairs integrate the variational equations: "step" is null and "tol" given.
+TEST(ChaosCli, AdaptiveMethod) {
+  const CliResult r = run("chaos " + brun() + " --t-end 20 --tol 1e-10 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["method"], "rkf78");
+  EXPECT_TRUE(j["step"].is_null());
+  EXPECT_EQ(j["tol"], 1e-10);
+}
+
+TEST(ChaosCli, HistoryCsv) {
+  const fs::path csv =
+      fs::temp_directory_path() / ("newtop_chaos_" + std::to_string(::getpid()) + ".csv");
+  const CliResult r = run("chaos " + brun() + " --t-end 5 --spectrum --out " + csv.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream in(csv);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header,
+            "t,lyapunov_max,megno_y,megno,fli,lambda1,lambda2,lambda3,lambda4,lambda5,lambda6");
+  int rows = 0;
+  std::string last;
+  for (std::string line; std::getline(in, line);) {
+    ++rows;
+    last = line;
+  }
+  EXPECT_EQ(rows, 500);  // every step of 500
+  EXPECT_EQ(last.substr(0, 2), "5,");
+  fs::remove(csv);
+}
+
+TEST(ChaosCli, BadInputIsOneLineBeforeWork) {
+  const fs::path csv =
+      fs::temp_directory_path() / ("newtop_chaos_never_" + std::to_string(::getpid()) + ".csv");
+  for (const std::string args : {"--tol -1", "--method dopri5 --step 0.1", "--step -1",
+                                 "--step 0.1 --tol 1e-9", "--t-end 0", "--method nope"}) {
+    const CliResult r = run("chaos " + brun() + " " + args + " --out " + csv.string());
+    EXPECT_EQ(r.code, 2) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+    EXPECT_FALSE(fs::exists(csv)) << args;
+  }
+}
+
+}  // namespace

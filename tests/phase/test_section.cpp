@@ -1,0 +1,163 @@
+// Poincaré sections: the surface grammar, crossings on the surface to round-off on the method's
+// own solution, the fourth integral at every crossing of Brun's case, independence of the step
+// to the method's accuracy, the seeded orbits of a phase portrait and the Andoyer–Deprit angles.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+#include "newtop/model/model.hpp"
+#include "newtop/phase/section.hpp"
+#include "support/problems.hpp"
+
+namespace newtop {
+namespace {
+
+using phase::Crossing;
+using phase::Direction;
+using test::kEps;
+
+struct SectionResult {
+  std::vector<Crossing> crossings;
+  phase::SectionRun run;
+  phase::IntegralsDrift drift;
+};
+
+template <Field F>
+SectionResult section(const BasicModel<F>& model, const State& x0, const std::string& surface,
+                      MethodSettings method, double t_end, Direction dir = Direction::up,
+                      std::int64_t max_crossings = 1000) {
+  const phase::SurfaceFunction g(phase::parse_surface(surface), model.body);
+  const phase::SectionSettings settings{dir, max_crossings, false};
+  SectionResult r;
+  r.run = phase::section_orbit(method, model, g, settings, 0, x0, 0.0, t_end, IntegrateOptions{},
+                               r.crossings, r.drift);
+  return r;
+}
+
+MethodSettings fixed(const std::string& name, double h) {
+  MethodSettings m;
+  m.name = name;
+  m.step = h;
+  return m;
+}
+
+MethodSettings adaptive(const std::string& name, double tol) {
+  MethodSettings m;
+  m.name = name;
+  m.abs_tol = m.rel_tol = tol;
+  return m;
+}
+
+TEST(SurfaceGrammar, ReadsAffineExpressions) {
+  const phase::Surface s = phase::parse_surface("gamma1 + 0.5*gamma2 = 0.1");
+  EXPECT_EQ(s.a_gamma, Vec3(1.0, 0.5, 0.0));
+  EXPECT_TRUE(s.a_omega.isZero(0.0) && s.a_m.isZero(0.0));
+  EXPECT_EQ(s.c, 0.1);
+  const phase::Surface t = phase::parse_surface("  -omega1 - 2e-1 * m3 +gamma2=-3");
+  EXPECT_EQ(t.a_omega, Vec3(-1.0, 0.0, 0.0));
+  EXPECT_EQ(t.a_m, Vec3(0.0, 0.0, -0.2));
+  EXPECT_EQ(t.a_gamma, Vec3(0.0, 1.0, 0.0));
+  EXPECT_EQ(t.c, -3.0);
+  EXPECT_EQ(phase::gamma_plane_axis(phase::parse_surface("gamma3 = 0")), 2);
+  EXPECT_EQ(phase::gamma_plane_axis(s), -1);
+}
+
+TEST(SurfaceGrammar, RejectsMalformedExpressionsInOneLine) {
+  for (const char* bad :
+       {"", "gamma3", "gamma4 = 0", "0.5 gamma2 = 0", "gamma3 = 0 0", "gamma1 + gamma1 = 0",
+        "0*gamma1 = 1", "gamma3 = x", "gamma3 =", "+-gamma3 = 0", "gamma3 == 0", "gamma3 = 1e400",
+        "omega = 0", "gamma3 + 1 = 0", "2*3*gamma1 = 0", "gamma1 gamma2 = 0", "x = 0"}) {
+    try {
+      phase::parse_surface(bad);
+      ADD_FAILURE() << "accepted '" << bad << "'";
+    } catch (const InputError& e) {
+      const std::string msg = e.what();
+      EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+      EXPECT_EQ(msg.rfind("--surface: expected ", 0), 0u) << msg;
+      EXPECT_NE(msg.find("found"), std::string::npos) << msg;
+    }
+  }
+}
+
+TEST(SurfaceGrammar, OmegaTermsBecomeAffineInM) {
+  const QuadraticModel model = test::generic_model(Vec3(0.1, -0.2, 0.3));
+  const phase::SurfaceFunction g(phase::parse_surface("2*omega1 - omega3 + m2 + gamma3 = 0.4"),
+                                 model.body);
+  const State x = test::generic_state(model);
+  const Vec3 w = omega(model.body, x);
+  const double direct = 2 * w[0] - w[2] + x.m[1] + x.gamma[2] - 0.4;
+  EXPECT_NEAR(g(x), direct, 8 * kEps * g.scale(x));
+}
+
+// Every crossing on the surface: |g| within a few roundings of g's terms, for each kind of method
+// and for surfaces of γ, of ω and mixed. 4 ε: the rounding of the three products and sums of g
+// (≤ 3 ε of its terms) plus the last bit of τ.
+TEST(Section, CrossingsLieOnTheSurfaceToRoundOff) {
+  const QuadraticModel model = test::generic_model();
+  const State x0 = test::generic_state(model);
+  for (const char* surface : {"gamma3 = 0", "omega1 = 0.2", "gamma1 + 0.5*gamma2 - m3 = 0.1"}) {
+    for (const MethodSettings& m :
+         {fixed("splitting6", 0.02), fixed("splitting2", 0.01), fixed("rk4", 0.01),
+          adaptive("rkf78", 1e-10), adaptive("dopri5", 1e-9)}) {
+      const SectionResult r = section(model, x0, surface, m, 60.0, Direction::both);
+      ASSERT_GE(r.crossings.size(), 4u) << surface << " " << m.name;
+      const phase::SurfaceFunction g(phase::parse_surface(surface), model.body);
+      for (const Crossing& c : r.crossings) {
+        EXPECT_LE(std::abs(g(c.x)), 4 * kEps * g.scale(c.x))
+            << surface << " " << m.name << " t = " << c.t;
+      }
+    }
+  }
+}
+
+// The exact field of point masses: the same, with the kick of the exact moment.
+TEST(Section, ExactFieldCrossingsOnTheSurface) {
+  const auto points = std::make_shared<const MassModel>(PointMasses(
+      {1.0, 0.7, 0.5, 0.9},
+      {Vec3(0.3, 0.1, -0.2), Vec3(-0.4, 0.2, 0.1), Vec3(0.1, -0.5, 0.3), Vec3(0.0, 0.2, -0.4)}));
+  const Model model = Model::exact(points, 2.0, 3.0 * max_radius(*points));
+  const auto& exact = std::get<BasicModel<ExactField>>(model.variant());
+  const State x0 = state_from_omega(exact.body, Vec3(0.5, 1.1, -0.4), Vec3(0.48, -0.6, 0.64));
+  const SectionResult r = section(exact, x0, "gamma2 = 0", fixed("splitting4", 0.01), 40.0);
+  ASSERT_GE(r.crossings.size(), 2u);
+  const phase::SurfaceFunction g(phase::parse_surface("gamma2 = 0"), exact.body);
+  for (const Crossing& c : r.crossings) EXPECT_LE(std::abs(g(c.x)), 4 * kEps * g.scale(c.x));
+}
+
+// The kept direction: up crossings have dg/dt > 0, down ones < 0; both is their union.
+TEST(Section, DirectionSelectsTheSignOfDgDt) {
+  const QuadraticModel model = test::generic_model();
+  const State x0 = test::generic_state(model);
+  const phase::SurfaceFunction g(phase::parse_surface("gamma3 = 0"), model.body);
+  auto rate = [&](const State& x) {
+    const State d = rhs(model, x);
+    return g.b_m.dot(d.m) + g.b_gamma.dot(d.gamma);
+  };
+  const MethodSettings m = fixed("splitting6", 0.02);
+  const SectionResult up = section(model, x0, "gamma3 = 0", m, 80.0, Direction::up);
+  const SectionResult down = section(model, x0, "gamma3 = 0", m, 80.0, Direction::down);
+  const SectionResult both = section(model, x0, "gamma3 = 0", m, 80.0, Direction::both);
+  ASSERT_GE(up.crossings.size(), 3u);
+  for (const Crossing& c : up.crossings) EXPECT_GT(rate(c.x), 0.0);
+  for (const Crossing& c : down.crossings) EXPECT_LT(rate(c.x), 0.0);
+  EXPECT_EQ(both.crossings.size(), up.crossings.size() + down.crossings.size());
+}
+
+TEST(Section, StopsAtTheCrossingCountOrAtTEnd) {
+  const QuadraticModel model = test::brun_model();
+  const State x0 = test::generic_state(model);
+  const SectionResult few =
+      section(model, x0, "gamma3 = 0", fixed("splitting6", 0.02), 1000.0, Direction::up, 3);
+  EXPECT_EQ(few.crossings.size(), 3u);
+  EXPECT_TRUE(few.run.by_crossings);
+  EXPECT_LT(few.crossings.back().t, 1000.0);
+  const SectionResult all = section(model, x0, "gamma3 = 0", fixed("splitting6", 0.02), 30.0);
+  EXPECT_FALSE(all.run.by_crossings);
+  EXPECT_EQ(all.run.outcome.t, 30.0);
+}
+
+}  // namespace
+}  // namespace newtop
