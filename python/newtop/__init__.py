@@ -18,8 +18,9 @@ try:  # the compiled extension, when the build made one (PYTHONPATH=build/python
                           conserved_integrals, integrate, is_orbit_scenario, load_scenario,
                           parse_scenario)
     from ._newtop import integrals as integrals_at  # noqa: F401  (the library's, at a state)
-    from .commands import (analytic, equilibria, field, find_integrals, integrals,  # noqa: F401
-                           libration, rotations, simulate, stability, sweep, view)
+    from .commands import (analytic, chaos, equilibria, field, find_integrals, integrals,  # noqa: F401
+                           libration, rotations, section, simulate, stability, sweep,
+                           view)
 
     HAVE_EXTENSION = True
 except ModuleNotFoundError as e:  # absent is fine; present but broken is an error
@@ -30,6 +31,7 @@ except ModuleNotFoundError as e:  # absent is fine; present but broken is an err
 __all__ = ["HAVE_EXTENSION", "__version__"]
 if HAVE_EXTENSION:
     __all__ += ["Body", "InputError", "MassModel", "Model", "QuadraticField", "Scenario", "State",
-                "analytic", "conserved_integrals", "equilibria", "field", "find_integrals",
+                "analytic", "chaos", "conserved_integrals", "equilibria", "field", "find_integrals",
                 "integrals", "integrals_at", "integrate", "is_orbit_scenario", "libration",
-                "load_scenario", "parse_scenario", "rotations", "simulate", "stability", "sweep", "view"]
+                "load_scenario", "parse_scenario", "rotations", "section", "simulate", "stability", "sweep",
+                "view"]

@@ -105,6 +105,9 @@ def _make(name, doc):
     return fn
 
 
+chaos = _make("chaos", "Chaos indicators: lambda_max, spectrum, MEGNO and FLI (docs/chaos.md).")
+section = _make("section", "Poincare section of the scenario's motion (docs/section.md); "
+                "'crossings' is a list of dicts.")
 analytic = _make("analytic", "Integrable case detected and its closed form against the numerics.")
 equilibria = _make("equilibria", "Every equilibrium at rest, its type and the count rule (spec 7).")
 field = _make("field", "Exact and quadratic field of a mass model: V, dV/dgamma, moment, force.")
@@ -144,5 +147,5 @@ def view(csv, out, scenario=None):
     return out
 
 
-__all__ = ["analytic", "command", "equilibria", "field", "find_integrals", "integrals",
-           "libration", "rotations", "run", "simulate", "stability", "sweep", "view"]
+__all__ = ["analytic", "chaos", "command", "equilibria", "field", "find_integrals", "integrals",
+           "libration", "rotations", "run", "section", "simulate", "stability", "sweep", "view"]

@@ -175,9 +175,6 @@ SweepFile load_sweep(const std::string& path) {
       for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
       top.fail("quantities", "expected any of " + list + ", found '" + q + "'");
     }
-    if (q == "megno" || q == "lyapunov_max") {
-      top.fail("quantities", "'" + q + "' is not available in this build yet (newtop chaos)");
-    }
     if (std::count(s.quantities.begin(), s.quantities.end(), q) > 1) {
       top.fail("quantities", "expected each quantity once, found '" + q + "' twice");
     }

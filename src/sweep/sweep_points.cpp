@@ -14,6 +14,7 @@
 #include "newtop/analysis/stability_spin.hpp"
 #include "newtop/integrate/methods.hpp"
 #include "newtop/model/integrals.hpp"
+#include "newtop/phase/chaos.hpp"
 
 namespace newtop::sweep {
 namespace {
@@ -155,6 +156,8 @@ std::vector<std::string> quantity_columns(const SweepFile& s) {
     if (q == "drift") c.insert(c.end(), {"drift_energy", "drift_area", "drift_geometric"});
     if (q == "equilibria") c.insert(c.end(), {"equilibria_count", "minima", "saddles", "maxima"});
     if (q == "final_state") c.insert(c.end(), {"t", "p", "q", "r", "gamma1", "gamma2", "gamma3"});
+    if (q == "megno") c.push_back("megno");
+    if (q == "lyapunov_max") c.push_back("lyapunov_max");
   }
   return c;
 }
@@ -198,7 +201,11 @@ void check_points(SweepFile& s) {
     }
     try {
       if (wants(s, "stability")) stability_state(sc, o);
-      if (wants(s, "drift") || wants(s, "final_state")) {
+      if (wants(s, "megno") || wants(s, "lyapunov_max")) {
+        phase::check_tangent_method(io::resolve_method(sc, s.integrate));
+      }
+      if (wants(s, "drift") || wants(s, "final_state") || wants(s, "megno") ||
+          wants(s, "lyapunov_max")) {
         io::resolve_method(sc, s.integrate);
         const double t1 = io::resolve_t_end(sc, s.integrate);
         check_time_span(sc.integrate.t0, t1);
@@ -213,6 +220,19 @@ PointResult evaluate_point(const SweepFile& s, std::size_t index) {
   StabilityOptions o;
   const io::Scenario sc = point_scenario(s, index, &o);
   PointResult r{"ok", {}};
+  std::optional<phase::ChaosResult> chaos;
+  if (wants(s, "megno") || wants(s, "lyapunov_max")) {  // one tangent run for both (newtop chaos)
+    const MethodSettings method = io::resolve_method(sc, s.integrate);
+    const double t1 = io::resolve_t_end(sc, s.integrate);
+    IntegrateOptions options;
+    if (sc.integrate.max_steps) options.max_steps = *sc.integrate.max_steps;
+    chaos = visit_model(sc.model, [&](const auto& m) {
+      return phase::chaos_run(method, m, sc.initial, sc.integrate.t0, t1, options, false);
+    });
+    if (chaos->outcome.status != Status::finished) {
+      return {std::string(to_string(chaos->outcome.status)), {}};
+    }
+  }
   std::optional<RunResult> traj;
   if (wants(s, "drift") || wants(s, "final_state")) {
     traj = run(s, sc);
@@ -233,6 +253,10 @@ PointResult evaluate_point(const SweepFile& s, std::size_t index) {
       r.values.insert(r.values.end(),
                       {static_cast<double>(e.equilibria.size()), static_cast<double>(e.minima),
                        static_cast<double>(e.saddles), static_cast<double>(e.maxima)});
+    } else if (q == "megno") {
+      r.values.push_back(chaos->indicators.megno);
+    } else if (q == "lyapunov_max") {
+      r.values.push_back(chaos->indicators.lyapunov_max);
     } else if (q == "final_state") {
       const State& x = traj->outcome.state;
       const Vec3 w = omega(sc.model.body(), x);

@@ -240,3 +240,15 @@ def test_bad_mass_models_raise_value_error():
                                     [[0, 1, 2]], 1.0)  # one triangle: not closed
     with pytest.raises(ValueError):
         newtop.MassModel.polyhedron_file(os.path.join(EXAMPLES, "no_such_mesh.off"), 1.0)
+
+
+def test_section_and_chaos_give_the_programs_json():
+    brun = example("section_brun.toml")
+    r = newtop.section(brun, surface="gamma3 = 0", crossings=20)
+    same(r, program_json("section", brun, "--surface", "gamma3 = 0", "--crossings", "20"))
+    assert r["count"] == len(r["crossings"]) == 20
+    assert r["crossings"][0]["gamma"].shape == (3,)
+    c = newtop.chaos(brun, t_end=100.0)
+    same(c, program_json("chaos", brun, "--t-end", "100"))
+    with pytest.raises(ValueError, match="surface"):
+        newtop.section(brun, surface="gamma4 = 0")
