@@ -130,6 +130,15 @@ def sweep_figures(g: Gallery):
           ["stability.omega", "body.inertia[2]"])
 
 
+def phase_figures(g: Gallery):
+    for name in ("section_brun", "section_chaotic"):
+        csv = g.file(name + ".csv")
+        c = g.run("section", example(name + ".toml"), "--surface", "gamma3 = 0", "--orbits", "12",
+                  "--out", csv)[0]
+        g.add(name + ".png", plot.figure(results.load(csv)), [c], ["Poincaré section"],
+              ["l", "L_over_G"])
+
+
 def other_figures(g: Gallery):
     c = g.json("analytic.json", "analytic", example("analytic_lagrange.toml"), "--samples", "80")
     g.add("analytic_lagrange.png", plot.figure(results.load(g.file("analytic.json"))), [c],
@@ -179,6 +188,7 @@ def make(newtop, out, chromium=None, quiet=False):
     trajectory_figures(g)
     analysis_figures(g)
     sweep_figures(g)
+    phase_figures(g)
     other_figures(g)
     if chromium:
         viewer_screenshot(g, chromium)
