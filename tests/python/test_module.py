@@ -186,6 +186,8 @@ def test_every_snippet_of_docs_python_md_runs(tmp_path, monkeypatch):
     for code in snippets:
         exec(compile(code, "docs/python.md", "exec"), namespace)
     assert (tmp_path / "run.html").stat().st_size > 0
+    for picture in ("heavy_top.png", "beletsky.png"):  # the tutorial's figures
+        assert (tmp_path / picture).stat().st_size > 10_000, picture
 
 
 def test_sweep_gives_one_array_per_column():
