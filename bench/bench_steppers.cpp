@@ -43,16 +43,24 @@ SplittingStepper make_splitting(const char* name, FreeBodySplit split) {
 // Google Benchmark and the instruction counts.
 using Steps = std::function<void(std::int64_t)>;
 
-template <class S>
+// X = OrientedState: the same steps carrying the attitude (the cost of it).
+template <class S, class X = State>
 Steps newtop_steps(S stepper) {
-  return [s = std::move(stepper), m = bench_model(), x = State{},
-          init = false](std::int64_t n) mutable {
-    if (!init) x = bench_state(m), init = true;
-    for (std::int64_t i = 0; i < n; ++i) {
-      s.step(m, x, kStep);
-      benchmark::DoNotOptimize(x);
-    }
-  };
+  return
+      [s = std::move(stepper), m = bench_model(), x = X{}, init = false](std::int64_t n) mutable {
+        if (!init) {
+          if constexpr (kOriented<X>) {
+            x = with_attitude(bench_state(m), from_euler_321(Vec3(0.7, -0.4, 2.1)));
+          } else {
+            x = bench_state(m);
+          }
+          init = true;
+        }
+        for (std::int64_t i = 0; i < n; ++i) {
+          s.step(m, x, kStep);
+          benchmark::DoNotOptimize(x);
+        }
+      };
 }
 
 // The peer: odeint's runge_kutta4 on std::array with the right-hand side written out by hand.
@@ -78,7 +86,18 @@ std::map<std::string, std::function<Steps()>> benchmarks() {
       return newtop_steps(make_splitting(name, FreeBodySplit::spin));
     };
   }
+  for (const char* name : {"splitting2", "splitting6"}) {
+    b[std::string(name) + "_axes_attitude"] = [name] {
+      return newtop_steps<SplittingStepper, OrientedState>(
+          make_splitting(name, FreeBodySplit::axes));
+    };
+    b[std::string(name) + "_spin_attitude"] = [name] {
+      return newtop_steps<SplittingStepper, OrientedState>(
+          make_splitting(name, FreeBodySplit::spin));
+    };
+  }
   b["newtop_rk4"] = [] { return newtop_steps(Rk4Stepper()); };
+  b["newtop_rk4_attitude"] = [] { return newtop_steps<Rk4Stepper, OrientedState>(Rk4Stepper()); };
   b["dopri5_fixed_step"] = [] {
     return newtop_steps(
         OdeintFixedStepper<boost::numeric::odeint::runge_kutta_dopri5<OdeState>, 5>());

@@ -25,6 +25,7 @@ struct SimulateArgs {
   std::string scenario;
   std::optional<double> t_end, step, tol, dt_out;
   std::optional<std::string> method, out, times;
+  std::optional<int> euler;
   std::optional<std::int64_t> every;
   bool json = false;
 };
@@ -101,13 +102,14 @@ RunPlan make_plan(const SimulateArgs& a, const io::Scenario& sc) {
   return p;
 }
 
-/// Runs the plan, writing the CSV rows; every step is checked for a pending SIGINT/SIGTERM.
-template <class M>
-Outcome run_plan(const RunPlan& p, const M& model, const State& x0, DriftTracker<M>& drift,
+/// Runs the plan from x0 (a State, or an OrientedState with the attitude), writing the CSV rows;
+/// every step is checked for a pending SIGINT/SIGTERM.
+template <class M, class X>
+Outcome run_plan(const RunPlan& p, const M& model, const X& x0, DriftTracker<M>& drift,
                  io::CsvTrajectory* csv) {
   std::int64_t count = 0;
   double last_written = std::nan("");
-  auto on_step = [&](double t, const State& s) {
+  auto on_step = [&](double t, const X& s) {
     throw_if_interrupted(t);
     drift.observe(s);
     if (csv && !p.times && count % p.every == 0) {
@@ -117,12 +119,18 @@ Outcome run_plan(const RunPlan& p, const M& model, const State& x0, DriftTracker
     ++count;
   };
   if (p.times) {
-    auto on_sample = [&](std::int64_t, double t, const State& s) { csv->write(t, s); };
+    auto on_sample = [&](std::int64_t, double t, const X& s) { csv->write(t, s); };
     return run_method_sampled(p.method, model, x0, p.t0, p.t_end, *p.times, p.options, on_sample,
                               on_step);
   }
   const Outcome out = run_method(p.method, model, x0, p.t0, p.t_end, p.options, on_step);
-  if (csv && last_written != out.t) csv->write(out.t, out.state);  // always end on the last state
+  if (csv && last_written != out.t) {  // always end on the last state
+    if constexpr (kOriented<X>) {
+      csv->write(out.t, with_attitude(out.state, *out.attitude));
+    } else {
+      csv->write(out.t, out.state);
+    }
+  }
   return out;
 }
 
@@ -169,15 +177,25 @@ void print_report(const SimulateArgs& a, const io::Scenario& sc, SimulationRepor
 template <class M>
 int run_in(const SimulateArgs& a, const io::Scenario& sc, const M& model) {
   const RunPlan plan = make_plan(a, sc);
+  if (a.euler && !sc.attitude) {
+    throw InputError(
+        "--euler: expected a scenario with an attitude ([initial] quaternion, "
+        "rotation_matrix, euler_321 or euler_313), found none in " +
+        sc.source);
+  }
   std::unique_ptr<io::AtomicFile> file;
   std::unique_ptr<io::CsvTrajectory> csv;
   if (plan.out_path) {
     file = std::make_unique<io::AtomicFile>(*plan.out_path, sc.input_files);
-    // The CSV's integral columns are those of the run's own field.
-    csv = std::make_unique<io::CsvTrajectory>(file->stream(), sc.model);
+    // The CSV's integral columns are those of the run's own field; with an attitude, q0..q3.
+    csv = std::make_unique<io::CsvTrajectory>(
+        file->stream(), sc.model,
+        io::AttitudeColumns{sc.attitude.has_value(), a.euler.value_or(0)});
   }
   DriftTracker<M> drift(model, sc.initial);
-  const Outcome out = run_plan(plan, model, sc.initial, drift, csv.get());
+  const Outcome out =
+      sc.attitude ? run_plan(plan, model, with_attitude(sc.initial, *sc.attitude), drift, csv.get())
+                  : run_plan(plan, model, sc.initial, drift, csv.get());
   // Exact or multipole field: the same run in the quadratic model, for comparison.
   std::optional<Outcome> q;
   if (sc.model.kind() != FieldKind::quadratic) {
@@ -229,6 +247,10 @@ const RegisterCommand reg{Command{
                                    "to the last)");
       every->excludes(dt)->excludes(times);
       dt->excludes(times);
+      sub.add_option("--euler", a->euler,
+                     "with an attitude: add the Euler angles 321 (psi, theta, phi) or 313 (phi, "
+                     "theta, psi) to the CSV")
+          ->check(CLI::IsMember({321, 313}));
       sub.add_flag("--json", a->json, "print one JSON object instead of the summary");
       return [a] { return run(*a); };
     }}};

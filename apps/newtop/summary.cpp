@@ -128,6 +128,15 @@ io::Json simulation_json(const SimulationReport& r) {
                 {"omega", io::to_json(w)},
                 {"gamma", io::to_json(r.outcome.state.gamma)},
                 {"m", io::to_json(r.outcome.state.m)}};
+  if (r.outcome.attitude) {
+    const auto q = scalar_first(*r.outcome.attitude);
+    j["final"]["quaternion"] = {q[0], q[1], q[2], q[3]};
+    j["attitude"] = {
+        {"frame", "principal axes to inertial, scalar first"},
+        {"inertial_direction",
+         io::to_json(inertial_direction(with_attitude(r.outcome.state, *r.outcome.attitude)))},
+        {"max_renormalization", r.outcome.attitude_projection}};
+  }
   j["integrals"] = {{"initial", io::to_json(r.initial)},
                     {"final", io::to_json(r.final_values)},
                     {"max_abs_drift", io::to_json(r.max_drift)}};
@@ -160,6 +169,12 @@ void print_simulation_summary(std::ostream& os, const SimulationReport& r) {
   if (o.rejected) os << " (" << o.rejected << " rejected)";
   os << "\nfinal     omega = " << fmt(omega(r.scenario.model.body(), o.state))
      << "\n          gamma = " << fmt(o.state.gamma) << "\n";
+  if (o.attitude) {
+    const auto q = scalar_first(*o.attitude);
+    os << "          quaternion = [" << fmt(q[0]) << ", " << fmt(q[1]) << ", " << fmt(q[2]) << ", "
+       << fmt(q[3]) << "]  (principal axes to inertial; renormalized by at most "
+       << fmt(o.attitude_projection, 3) << " per step)\n";
+  }
   os << "integral          initial                  final                    max |drift|\n";
   auto row = [&](const char* name, double a, double b, double d) {
     os << "  " << std::left << std::setw(10) << name << std::setw(25) << fmt(a) << std::setw(25)

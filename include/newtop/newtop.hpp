@@ -20,6 +20,7 @@
 #include "newtop/integrate/driver.hpp"
 #include "newtop/integrate/free_body_flow.hpp"
 #include "newtop/integrate/methods.hpp"
+#include "newtop/model/attitude.hpp"
 #include "newtop/model/body.hpp"
 #include "newtop/model/field.hpp"
 #include "newtop/model/integrals.hpp"

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "newtop/analysis/analytic_quadrature.hpp"
+#include "newtop/analysis/lagrange_attitude.hpp"
 #include "newtop/model/integrals.hpp"
 
 namespace newtop {
@@ -107,6 +108,12 @@ double inverse_wp(const LagrangeCase& s, double P) {
   const double rho = (P - s.e_low) / s.e_span;
   const double cn = std::clamp((rho - 1) / (rho + 1), -1.0, 1.0);
   return boost::math::ellint_1(s.modulus, std::acos(cn));
+}
+
+/// φ̇ = (p γ1 + q γ2)/(1 − γ3²) = (b − β γ3)/(1 − γ3²).
+double precession_rate(const LagrangeCase& s, double u) {
+  const LagrangeQuartic& Q = s.quartic;
+  return (Q.b - Q.beta * u) / (1 - u * u);
 }
 
 double psi_rate(const LagrangeCase& s, double u) {
@@ -224,6 +231,17 @@ std::array<double, 2> lagrange_gamma3(const LagrangeCase& s, double t) {
   if (s.steady) return {s.u1, 0.0};
   const auto [u, du] = gamma3_at(s, s.z0 + s.direction * t);
   return {u, s.direction * du};
+}
+
+Vec3 lagrange_euler_angles(const LagrangeCase& s, double t) {
+  const double u = lagrange_gamma3(s, t)[0];
+  auto spin_rate = [&](double tau) { return psi_rate(s, lagrange_gamma3(s, tau)[0]); };
+  auto prec_rate = [&](double tau) { return precession_rate(s, lagrange_gamma3(s, tau)[0]); };
+  const double psi = s.steady ? s.psi0 + spin_rate(0.0) * t
+                              : s.psi0 + integrate_periodic(spin_rate, s.nutation_period, t);
+  const double phi =
+      s.steady ? prec_rate(0.0) * t : integrate_periodic(prec_rate, s.nutation_period, t);
+  return {phi, std::acos(std::clamp(u, -1.0, 1.0)), psi};
 }
 
 State lagrange_state(const LagrangeCase& s, double t) {

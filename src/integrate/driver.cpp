@@ -66,6 +66,18 @@ void check_state(const State& x) {
   }
 }
 
+void check_state(const OrientedState& x) {
+  check_state(static_cast<const State&>(x));
+  const double n = x.q.norm();
+  if (!(x.q.coeffs().allFinite() && std::abs(n - 1.0) <= kUnitQuaternionTolerance)) {
+    const auto q = scalar_first(x.q);
+    throw InputError("quaternion: expected a finite unit quaternion (|norm - 1| <= " +
+                     format_number(kUnitQuaternionTolerance) + "), found [" + format_number(q[0]) +
+                     ", " + format_number(q[1]) + ", " + format_number(q[2]) + ", " +
+                     format_number(q[3]) + "]");
+  }
+}
+
 OutputTimes OutputTimes::every(double D, double t0, double t1) {
   check_time_span(t0, t1);
   if (!(std::isfinite(D) && D > 0)) {

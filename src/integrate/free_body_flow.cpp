@@ -202,23 +202,57 @@ double precession_rate(const EulerPoinsot& s, const Vec3& m) {
 }
 
 State free_body_state(const EulerPoinsot& s, double t) {
+  Mat3 G;
+  return free_body_state(s, t, G);
+}
+
+State free_body_state(const EulerPoinsot& s, double t, Mat3& G) {
   if (s.permanent) {
     const Vec3 w = s.initial.m.cwiseQuotient(s.inertia);
     const double n = w.norm();
-    if (n == 0.0) return s.initial;
+    if (n == 0.0) {
+      G.setIdentity();
+      return s.initial;
+    }
     // γ̇ = γ × ω = −ω × γ: a rotation by −|ω| t about ω.
-    const Eigen::AngleAxisd R(-n * t, w / n);
-    return {s.initial.m, R * s.initial.gamma};
+    G = Eigen::AngleAxisd(-n * t, w / n).toRotationMatrix();
+    return {s.initial.m, G * s.initial.gamma};
   }
   const Reduced r = jacobi_reduced(s, s.u0 + s.nu * t);
   const Vec3 m = momentum_at(s, r);
   const Mat3 St = euler_frame(m.normalized(), s.pole);
   const Mat3 Rz(Eigen::AngleAxisd(-precession_at(s, r, t), Vec3::UnitZ()));
+  G = St.transpose() * (Rz * s.euler_start);
   return {m, St.transpose() * (Rz * (s.euler_start * s.initial.gamma))};
+}
+
+Quaternion free_body_attitude(const EulerPoinsot& s, const Quaternion& q0, double t) {
+  Mat3 G;
+  free_body_state(s, t, G);
+  // R(t)ᵀ = G R(0)ᵀ.
+  return (q0 * Quaternion(Mat3(G.transpose()))).normalized();
+}
+
+Vec3 free_body_euler_angles(const EulerPoinsot& s, double t) {
+  const Vec3 l = angular_momentum(s, t).normalized();
+  const int a = (s.pole + 1) % 3, b = (s.pole + 2) % 3;
+  return {precession_angle(s, t), std::atan2(std::hypot(l[a], l[b]), l[s.pole]),
+          std::atan2(l[a], l[b])};
+}
+
+Quaternion free_body_pole_frame(const EulerPoinsot& s) {
+  const int a = (s.pole + 1) % 3, b = (s.pole + 2) % 3;
+  Mat3 Q = Mat3::Zero();
+  Q(0, a) = Q(1, b) = Q(2, s.pole) = 1.0;
+  return Quaternion(Q);
 }
 
 State free_body_flow(const Body& body, const State& x, double h) {
   return free_body_state(euler_poinsot(body, x), h);
+}
+
+State free_body_flow(const Body& body, const State& x, double h, Mat3& rotation) {
+  return free_body_state(euler_poinsot(body, x), h, rotation);
 }
 
 }  // namespace newtop

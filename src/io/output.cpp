@@ -91,17 +91,41 @@ void AtomicFile::commit() {
   delist(tmp_.c_str());  // after the rename: a signal in between finds no file to remove
 }
 
-CsvTrajectory::CsvTrajectory(std::ostream& out, const Model& model) : out_(out), model_(model) {
+CsvTrajectory::CsvTrajectory(std::ostream& out, const Model& model, AttitudeColumns attitude)
+    : out_(out), model_(model), attitude_(attitude) {
   const IntegralValues v = integrals(model, State{});
   brun_ = v.brun.has_value();
   lagrange_ = v.lagrange.has_value();
   out_ << "t,p,q,r,gamma1,gamma2,gamma3,energy,area,geometric";
   if (brun_) out_ << ",brun";
   if (lagrange_) out_ << ",lagrange";
+  if (attitude_.quaternion) out_ << ",q0,q1,q2,q3";
+  if (attitude_.euler == 321) out_ << ",euler321_psi,euler321_theta,euler321_phi";
+  if (attitude_.euler == 313) out_ << ",euler313_phi,euler313_theta,euler313_psi";
   out_ << '\n';
 }
 
 void CsvTrajectory::write(double t, const State& s) {
+  append(t, s);
+  line_ += '\n';
+  out_ << line_;
+}
+
+void CsvTrajectory::write(double t, const OrientedState& s) {
+  append(t, s);
+  auto add = [&](double x) { line_ += ',' + format_number(x); };
+  if (attitude_.quaternion) {
+    for (const double c : scalar_first(s.q)) add(c);
+  }
+  if (attitude_.euler != 0) {
+    const Vec3 a = attitude_.euler == 321 ? euler_321(s.q) : euler_313(s.q);
+    for (int i = 0; i < 3; ++i) add(a[i]);
+  }
+  line_ += '\n';
+  out_ << line_;
+}
+
+void CsvTrajectory::append(double t, const State& s) {
   const Vec3 w = omega(model_.body(), s);
   const IntegralValues v = integrals(model_, s);
   line_.clear();
@@ -117,8 +141,6 @@ void CsvTrajectory::write(double t, const State& s) {
   add(v.geometric);
   if (brun_) add(*v.brun);
   if (lagrange_) add(*v.lagrange);
-  line_ += '\n';
-  out_ << line_;
 }
 
 Json to_json(const Vec3& v) { return Json::array({v.x(), v.y(), v.z()}); }

@@ -21,7 +21,8 @@ const std::vector<std::string> kSections{"body",    "mass_model", "field",
                                          "initial", "integrate",  "output"};
 const std::vector<std::string> kBodyKeys{"inertia", "inertia_tensor", "mass", "center_of_mass",
                                          "gyrostat"};
-const std::vector<std::string> kInitialKeys{"omega", "gamma", "normalize"};
+const std::vector<std::string> kInitialKeys{
+    "omega", "gamma", "normalize", "quaternion", "rotation_matrix", "euler_321", "euler_313"};
 const std::vector<std::string> kIntegrateKeys{"method", "step", "tol", "t_end", "t0", "max_steps"};
 const std::vector<std::string> kOutputKeys{"file", "every", "dt"};
 
@@ -68,7 +69,7 @@ BodySource body_source(const toml::table* body, const MassModelSection* model) {
   return {{"body", "mass"}, {"body", "center_of_mass"}, {"body", inertia}, {"body", "gyrostat"}};
 }
 
-State read_initial(TableReader& r, const Body& body) {
+State read_initial(TableReader& r, const Body& body, std::optional<Quaternion>& attitude) {
   const Vec3 P_omega = r.vec3("omega");
   Vec3 P_gamma = r.vec3("gamma");
   const bool normalize = r.boolean("normalize", false);
@@ -83,9 +84,11 @@ State read_initial(TableReader& r, const Body& body) {
     r.fail("gamma", "expected a unit vector (|gamma| = 1 to 1e-12), found |gamma| = " +
                         format_number(norm) + "; add normalize = true to [initial] to rescale it");
   }
+  attitude = read_attitude(r, normalize);
   r.finish();
   // Vectors are given in the user's frame; the body works in its principal axes.
   const Mat3& P = body.principal_axes();
+  if (attitude) attitude = (*attitude * Quaternion(P)).normalized();
   return state_from_omega(body, P.transpose() * P_omega, P.transpose() * P_gamma);
 }
 
@@ -212,10 +215,11 @@ Scenario parse_scenario(const std::string& text, const std::string& source) {
   const FieldSection field = read_field(field_reader, mm.model, centre);
   const QuadraticModel checked{body_value, field.field};
   TableReader initial(*section("initial", true), source, "initial");
-  const State x0 = read_initial(initial, checked.body);
+  std::optional<Quaternion> attitude;
+  const State x0 = read_initial(initial, checked.body, attitude);
   check_magnitudes(checked, x0, field, body_source(body_table, mm_table ? &mm : nullptr), doc,
                    source);
-  Scenario s{source, run_model(mm, body_value, field, centre), x0, {}, {}, input_files};
+  Scenario s{source, run_model(mm, body_value, field, centre), x0, attitude, {}, {}, input_files};
   if (const toml::table* t = section("integrate", false)) {
     TableReader r(*t, source, "integrate");
     s.integrate = read_integrate(r);

@@ -2,10 +2,12 @@
 // Internal: the sections of a scenario file (docs/scenario.md) and the checks that span them.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "newtop/io/scenario.hpp"
+#include "newtop/model/attitude.hpp"
 #include "toml_reader.hpp"
 
 namespace newtop::io {
@@ -41,6 +43,18 @@ struct CentreSection {
 /// `field` is then the quadratic field of the same μ and R (for the magnitude checks).
 FieldSection read_field(TableReader& r, const std::shared_ptr<const MassModel>& mass_model,
                         CentreSection& centre);
+
+/// A quaternion or rotation matrix given for the attitude must be a unit quaternion (|‖q‖ − 1|)
+/// or orthonormal (max |RᵀR − I|) to this tolerance; it is then normalised (docs/scenario.md).
+inline constexpr double kAttitudeTolerance = 1e-6;
+
+/// The attitude keys of [initial]: quaternion, rotation_matrix, euler_321, euler_313.
+const std::vector<std::string>& attitude_keys();
+
+/// [initial]'s attitude (body → inertial, in the file's frame), or none when no attitude key is
+/// given; more than one is bad input, named at the second. `normalize` (the [initial] key) lets a
+/// quaternion of any non-zero norm be rescaled.
+std::optional<Quaternion> read_attitude(TableReader& r, bool normalize);
 
 /// Where the body's quantities come from: [body] keys, or the [mass_model] key that made them.
 struct BodySource {

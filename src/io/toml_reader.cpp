@@ -211,6 +211,19 @@ Vec3 TableReader::vec3(const std::string& key) {
   return v;
 }
 
+std::vector<double> TableReader::numbers(const std::string& key, std::size_t length) {
+  const toml::node& n = require(key);
+  const toml::array* a = n.as_array();
+  if (!a || a->size() != length) {
+    fail(key, "expected an array of " + std::to_string(length) + " numbers, found " + describe(n));
+  }
+  std::vector<double> v(length);
+  for (std::size_t i = 0; i < length; ++i) {
+    v[i] = element_number(key, *a->get(i), "element " + std::to_string(i + 1));
+  }
+  return v;
+}
+
 std::optional<Vec3> TableReader::optional_vec3(const std::string& key) {
   if (!has(key)) return std::nullopt;
   return vec3(key);

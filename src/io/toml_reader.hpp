@@ -51,6 +51,8 @@ class TableReader {
   Mat3 mat3(const std::string& key);
   /// A non-empty array of numbers (each finite, integers exact).
   std::vector<double> numbers(const std::string& key);
+  /// An array of exactly `length` numbers.
+  std::vector<double> numbers(const std::string& key, std::size_t length);
   /// A non-empty array of strings.
   std::vector<std::string> strings(const std::string& key);
   /// An array of arrays of numbers, each row of length row_length (0: any).

@@ -4,13 +4,15 @@
 
 #include <concepts>
 
+#include "newtop/model/attitude.hpp"
 #include "newtop/model/basic_model.hpp"
 
 namespace newtop {
 
-/// A fixed-step one-step method: `order()` and `step(model, x, h)` advancing x by h in place.
-template <class S, class M>
-concept FixedStepper = requires(S s, const S cs, const M& model, State& x, double h) {
+/// A fixed-step one-step method: `order()` and `step(model, x, h)` advancing x by h in place (x a
+/// State, or an OrientedState when X says so).
+template <class S, class M, class X = State>
+concept FixedStepper = requires(S s, const S cs, const M& model, X& x, double h) {
   { cs.order() } -> std::convertible_to<int>;
   s.step(model, x, h);
 };
@@ -24,9 +26,8 @@ inline constexpr double kNonFiniteShrink = 0.2;
 /// false. In both cases dt is replaced by the suggested next step. `initial_step(model, x, t0, t1)`
 /// is a first trial step |h| > 0 estimated from the problem (the right-hand side, the state and
 /// the tolerances), never from the span alone.
-template <class S, class M>
-concept AdaptiveStepper = requires(S s, const S cs, const M& model, State& x, double& t,
-                                   double& dt) {
+template <class S, class M, class X = State>
+concept AdaptiveStepper = requires(S s, const S cs, const M& model, X& x, double& t, double& dt) {
   { cs.order() } -> std::convertible_to<int>;
   { s.try_step(model, x, t, dt) } -> std::same_as<bool>;
   { s.initial_step(model, x, t, t) } -> std::convertible_to<double>;

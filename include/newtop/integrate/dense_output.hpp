@@ -8,6 +8,7 @@
 #include <concepts>
 #include <span>
 
+#include "newtop/model/attitude.hpp"
 #include "newtop/model/basic_model.hpp"
 
 namespace newtop {
@@ -23,18 +24,22 @@ concept DenseStepper = requires(S s, const M& model, double t) {
 /// One accepted step [t_old, t_new] of an adaptive run, as observers see it: state(t) for t between
 /// the ends, the end point itself exactly. Valid only inside the observer call that receives it
 /// (the stepper's next trial overwrites the data it reads). At the start of a run t_old = t_new =
-/// t0 and state(t0) is the initial state.
-template <class S, class M>
+/// t0 and state(t0) is the initial state. X: State, or OrientedState for a run with an attitude.
+template <class S, class M, class X = State>
 struct DenseStep {
   S& stepper;
   const M& model;
   double t_old;
   double t_new;
-  const State& x_new;
+  const X& x_new;
 
-  State state(double t) const {
+  X state(double t) const {
     if (t == t_new) return x_new;
-    return stepper.dense_state(model, t);
+    if constexpr (kOriented<X>) {
+      return stepper.dense_oriented_state(model, t);
+    } else {
+      return stepper.dense_state(model, t);
+    }
   }
 };
 

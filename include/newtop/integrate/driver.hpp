@@ -5,6 +5,11 @@
 /// observer that also takes a third argument receives, with adaptive methods, the accepted step's
 /// continuous extension (a DenseStep, dense_output.hpp): output at requested times and event
 /// location are observers of that kind (output_times.hpp), not stepper features.
+///
+/// The state is a State (m, γ), or an OrientedState that also carries the attitude q (body →
+/// inertial): the same driver, compiled separately for each, so a run without an attitude pays
+/// nothing for it. The Outcome then holds the final attitude and the largest renormalisation of q
+/// in one step.
 
 #include <cmath>
 #include <cstdint>
@@ -50,6 +55,11 @@ void check_options(const IntegrateOptions& opt);
 
 /// Throws InputError naming m or gamma when the state is not finite.
 void check_state(const State& x);
+/// The same, and `quaternion` unless q is finite and of norm 1 within kUnitQuaternionTolerance.
+void check_state(const OrientedState& x);
+
+/// A quaternion handed to a run is a unit one to this tolerance on |‖q‖ − 1| (it is normalised).
+inline constexpr double kUnitQuaternionTolerance = 1e-6;
 
 /// An observer that records nothing.
 struct NoObserver {
@@ -57,13 +67,41 @@ struct NoObserver {
 };
 
 inline bool is_finite(const State& s) { return s.m.allFinite() && s.gamma.allFinite(); }
+inline bool is_finite(const OrientedState& s) {
+  return is_finite(static_cast<const State&>(s)) && s.q.coeffs().allFinite();
+}
 
 namespace detail {
 
+/// The outcome of a run that has not moved from (t0, x).
+template <PhaseState X>
+Outcome start_outcome(double t0, const X& x) {
+  Outcome out;
+  out.t = t0;
+  out.state = x;
+  if constexpr (kOriented<X>) out.attitude = x.q;
+  return out;
+}
+
+/// Records the accepted state x in `out`.
+template <PhaseState X>
+void record(Outcome& out, const X& x) {
+  out.state = x;
+  if constexpr (kOriented<X>) out.attitude = x.q;
+}
+
+/// The stepper's largest renormalisation of the attitude, into `out`.
+template <class S>
+void record_projection(Outcome& out, const S& stepper) {
+  if constexpr (requires { stepper.attitude_projection(); }) {
+    out.attitude_projection = stepper.attitude_projection();
+  }
+}
+
 /// Calls observer(t, x, step) when the observer takes the step, observer(t, x) otherwise.
-template <class Obs, class Step>
-void notify(Obs& observer, double t, const State& x, const Step& step) {
-  if constexpr (std::is_invocable_v<Obs&, double, const State&, const Step&>) {
+template <class Obs, class X, class Step>
+void notify(Obs& observer, double t, const X& x, const Step& step) {
+  if constexpr (std::is_invocable_v<Obs&, double, const X&, const Step&>) {
     observer(t, x, step);
   } else {
     observer(t, x);
@@ -72,8 +110,8 @@ void notify(Obs& observer, double t, const State& x, const Step& step) {
 
 /// n equal steps from (t0, x) to t1 (the last one lands exactly on t1), continuing the counts in
 /// `out`. Returns false when the run stopped (non-finite state or step limit; `out` says which).
-template <class S, class M, class Obs>
-bool fixed_steps(S& stepper, const M& model, State& x, double t0, double t1, std::int64_t n,
+template <class S, class M, class X, class Obs>
+bool fixed_steps(S& stepper, const M& model, X& x, double t0, double t1, std::int64_t n,
                  const IntegrateOptions& opt, Outcome& out, Obs& observer) {
   const double h = (t1 - t0) / static_cast<double>(n);
   for (std::int64_t i = 1; i <= n; ++i) {
@@ -88,7 +126,7 @@ bool fixed_steps(S& stepper, const M& model, State& x, double t0, double t1, std
       return false;
     }
     out.t = t;
-    out.state = x;
+    record(out, x);
     ++out.steps;
     out.last_step = h;
     observer(t, x);
@@ -100,17 +138,18 @@ bool fixed_steps(S& stepper, const M& model, State& x, double t0, double t1, std
 
 /// Fixed-step driver. Throws InputError for non-finite times or state, a step that is not a finite
 /// number > 0, or a step count beyond kMaxStepCount.
-template <class S, Field F, class Obs = NoObserver>
-requires FixedStepper<S, BasicModel<F>> Outcome integrate(S& stepper, const BasicModel<F>& model,
-                                                          State x, double t0, double t1,
-                                                          const IntegrateOptions& opt,
-                                                          Obs&& observer = {}) {
+template <class S, Field F, class Obs = NoObserver, PhaseState X = State>
+requires FixedStepper<S, BasicModel<F>, X> Outcome integrate(S& stepper, const BasicModel<F>& model,
+                                                             X x, double t0, double t1,
+                                                             const IntegrateOptions& opt,
+                                                             Obs&& observer = {}) {
   check_options(opt);
   check_state(x);
   const std::int64_t n = fixed_step_count(t0, t1, opt.step);
-  Outcome out{Status::finished, t0, x, 0, 0, 0.0};
+  Outcome out = detail::start_outcome(t0, x);
   observer(t0, x);
   if (n > 0) detail::fixed_steps(stepper, model, x, t0, t1, n, opt, out, observer);
+  detail::record_projection(out, stepper);
   return out;
 }
 
@@ -119,16 +158,18 @@ requires FixedStepper<S, BasicModel<F>> Outcome integrate(S& stepper, const Basi
 /// shorter (only an accepted state counts; a run whose trials keep failing ends in
 /// step_size_underflow), and the last step is shortened to land exactly on t1. Throws InputError as
 /// the fixed-step driver does for bad times, state or options.
-template <class S, Field F, class Obs = NoObserver>
-requires AdaptiveStepper<S, BasicModel<F>> Outcome integrate(S& stepper, const BasicModel<F>& model,
-                                                             State x, double t0, double t1,
-                                                             const IntegrateOptions& opt,
-                                                             Obs&& observer = {}) {
+template <class S, Field F, class Obs = NoObserver, PhaseState X = State>
+requires AdaptiveStepper<S, BasicModel<F>, X> Outcome integrate(S& stepper,
+                                                                const BasicModel<F>& model, X x,
+                                                                double t0, double t1,
+                                                                const IntegrateOptions& opt,
+                                                                Obs&& observer = {}) {
+  using Step = DenseStep<S, BasicModel<F>, X>;
   check_time_span(t0, t1);
   check_options(opt);
   check_state(x);
-  Outcome out{Status::finished, t0, x, 0, 0, 0.0};
-  detail::notify(observer, t0, x, DenseStep<S, BasicModel<F>>{stepper, model, t0, t0, x});
+  Outcome out = detail::start_outcome(t0, x);
+  detail::notify(observer, t0, x, Step{stepper, model, t0, t0, x});
   const double span = t1 - t0;
   if (span == 0.0) return out;
   const double dir = span > 0 ? 1.0 : -1.0;
@@ -138,6 +179,7 @@ requires AdaptiveStepper<S, BasicModel<F>> Outcome integrate(S& stepper, const B
   while (dir * (t1 - t) > 0) {
     if (out.steps + out.rejected >= opt.max_steps) {
       out.status = Status::step_limit;
+      detail::record_projection(out, stepper);
       return out;
     }
     bool last = false;
@@ -148,9 +190,10 @@ requires AdaptiveStepper<S, BasicModel<F>> Outcome integrate(S& stepper, const B
     const double scale = std::max(std::abs(t), std::abs(span));
     if (!(std::abs(dt) >= opt.min_step_factor * scale)) {
       out.status = Status::step_size_underflow;
+      detail::record_projection(out, stepper);
       return out;
     }
-    State trial = x;
+    X trial = x;
     double t_trial = t;
     const double dt_tried = dt;
     const bool accepted = stepper.try_step(model, trial, t_trial, dt);
@@ -167,10 +210,11 @@ requires AdaptiveStepper<S, BasicModel<F>> Outcome integrate(S& stepper, const B
     t = last ? t1 : t_trial;
     ++out.steps;
     out.t = t;
-    out.state = x;
+    detail::record(out, x);
     out.last_step = dt_tried;
-    detail::notify(observer, t, x, DenseStep<S, BasicModel<F>>{stepper, model, t_old, t, x});
+    detail::notify(observer, t, x, Step{stepper, model, t_old, t, x});
   }
+  detail::record_projection(out, stepper);
   return out;
 }
 

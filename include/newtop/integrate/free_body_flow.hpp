@@ -63,6 +63,26 @@ Vec3 angular_momentum(const EulerPoinsot& s, double t);
 /// cyclic), in closed form.
 State free_body_state(const EulerPoinsot& s, double t);
 
+/// The same, with the rotation G(t) of the motion: γ(t) = G(t) γ(0) (every body-frame vector fixed
+/// in space moves alike).
+State free_body_state(const EulerPoinsot& s, double t, Mat3& G);
+
+/// The attitude at t of the motion started with the attitude q0 (body → inertial): R(t) = R(0)
+/// G(t)ᵀ, in closed form.
+Quaternion free_body_attitude(const EulerPoinsot& s, const Quaternion& q0, double t);
+
+/// The Euler angles of the free motion (3-1-3, newtop/model/attitude.hpp): body → N is
+/// R_z(φ) R_x(θ) R_z(ψ) Q, with N the frame fixed in space whose z axis is along the angular
+/// momentum and whose x axis is the line of nodes at t = 0 (φ(0) = 0), and Q the permutation of
+/// the body axes (a, b, pole) → (x, y, z) with a = pole + 1, b = pole + 2 (mod 3) (Q = I for pole
+/// 2). Precession φ(t) = precession_angle(s, t), nutation cos θ = m_pole/|m|, spin (sin ψ, cos ψ) ∝
+/// (m_a, m_b), m = m(t) in the body frame (Landau & Lifshitz §37). Returned as (φ, θ, ψ). Not for
+/// a permanent rotation (s.permanent: m is constant and the turn is G of free_body_state).
+Vec3 free_body_euler_angles(const EulerPoinsot& s, double t);
+
+/// Q above, as a rotation.
+Quaternion free_body_pole_frame(const EulerPoinsot& s);
+
 /// The precession angle φ(t) − φ(0) about the angular momentum (0 for a permanent rotation).
 double precession_angle(const EulerPoinsot& s, double t);
 

@@ -72,8 +72,8 @@ decltype(auto) with_stepper(const MethodSettings& settings, Fn&& fn) {
 }
 
 /// Runs the named method from (t0, x) to t1 with the driver.
-template <Field F, class Obs = NoObserver>
-Outcome run_method(const MethodSettings& settings, const BasicModel<F>& model, const State& x,
+template <Field F, class Obs = NoObserver, PhaseState X = State>
+Outcome run_method(const MethodSettings& settings, const BasicModel<F>& model, const X& x,
                    double t0, double t1, IntegrateOptions options = {}, Obs&& observer = {}) {
   options.step = settings.step;
   return with_stepper(settings,
@@ -83,10 +83,10 @@ Outcome run_method(const MethodSettings& settings, const BasicModel<F>& model, c
 /// Runs the named method from (t0, x) to t1 and reports the state at the output times to
 /// sample(k, t_k, state) (integrate_sampled: dense output of the adaptive methods; fixed-step
 /// methods land on every output time).
-template <Field F, class Sample, class Obs = NoObserver>
-Outcome run_method_sampled(const MethodSettings& settings, const BasicModel<F>& model,
-                           const State& x, double t0, double t1, const OutputTimes& times,
-                           IntegrateOptions options, Sample&& sample, Obs&& observer = {}) {
+template <Field F, class Sample, class Obs = NoObserver, PhaseState X = State>
+Outcome run_method_sampled(const MethodSettings& settings, const BasicModel<F>& model, const X& x,
+                           double t0, double t1, const OutputTimes& times, IntegrateOptions options,
+                           Sample&& sample, Obs&& observer = {}) {
   options.step = settings.step;
   return with_stepper(settings, [&](auto& s) {
     return integrate_sampled(s, model, x, t0, t1, times, options, sample, observer);

@@ -3,8 +3,10 @@
 /// The result of a run of the driver: how it ended, where and after how many steps.
 
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
+#include "newtop/model/attitude.hpp"
 #include "newtop/model/basic_model.hpp"
 
 namespace newtop {
@@ -27,6 +29,10 @@ struct Outcome {
   std::int64_t steps = 0;     ///< accepted steps
   std::int64_t rejected = 0;  ///< rejected trial steps (adaptive methods)
   double last_step = 0.0;     ///< size of the last accepted step
+  /// The attitude of `state` (body → inertial), when the run carried one.
+  std::optional<Quaternion> attitude{};
+  /// The largest renormalisation |‖q‖ − 1| of the attitude in one step (0 without an attitude).
+  double attitude_projection = 0.0;
 };
 
 }  // namespace newtop

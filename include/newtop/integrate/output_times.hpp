@@ -49,8 +49,8 @@ struct SamplingObserver {
   double dir;
   std::int64_t next = 0;
 
-  template <class Step>
-  void operator()(double t, const State& x, const Step& step) {
+  template <class X, class Step>
+  void operator()(double t, const X& x, const Step& step) {
     for (; next < times.size() && dir * (times[next] - t) <= 0; ++next) {
       const double tk = times[next];
       sample(next, tk, tk == t ? x : step.state(tk));
@@ -68,26 +68,28 @@ struct SamplingObserver {
 /// n = ceil(length / h) equal steps, so that OutputTimes::every(D) runs at the step D / ceil(D / h)
 /// (≤ h, dividing D). `observer` sees every accepted step. Output times after the point where a
 /// run stopped (outcome other than finished) are not sampled.
-template <class S, Field F, class Sample, class Obs = NoObserver>
-Outcome integrate_sampled(S& stepper, const BasicModel<F>& model, State x, double t0, double t1,
+template <class S, Field F, class Sample, class Obs = NoObserver, PhaseState X = State>
+Outcome integrate_sampled(S& stepper, const BasicModel<F>& model, X x, double t0, double t1,
                           const OutputTimes& times, const IntegrateOptions& opt, Sample&& sample,
                           Obs&& observer = {}) {
   const double dir = t1 < t0 ? -1.0 : 1.0;
-  if constexpr (AdaptiveStepper<S, BasicModel<F>>) {
+  if constexpr (AdaptiveStepper<S, BasicModel<F>, X>) {
     detail::SamplingObserver<Sample, Obs> obs{times, sample, observer, dir};
     return integrate(stepper, model, x, t0, t1, opt, obs);
   } else {
     check_options(opt);
     check_state(x);
     fixed_step_count(t0, t1, opt.step);  // checks the times and the step
-    Outcome out{Status::finished, t0, x, 0, 0, 0.0};
+    Outcome out = detail::start_outcome(t0, x);
     observer(t0, x);
     double a = t0;
     for (std::int64_t k = 0; k <= times.size(); ++k) {
       const double b = k < times.size() ? times[k] : t1;
       if (b != a) {
         const std::int64_t n = fixed_step_count(a, b, opt.step);
-        if (!detail::fixed_steps(stepper, model, x, a, b, n, opt, out, observer)) return out;
+        const bool go_on = detail::fixed_steps(stepper, model, x, a, b, n, opt, out, observer);
+        detail::record_projection(out, stepper);
+        if (!go_on) return out;
         a = b;
       }
       if (k < times.size()) sample(k, b, x);

@@ -4,11 +4,19 @@
 /// classical RK4 (fixed step, the baseline) and the embedded pairs Dormand–Prince 5(4) and
 /// Fehlberg 7(8) with absolute and relative tolerances, each with a continuous extension (dense
 /// output) of its accepted steps.
+///
+/// With an attitude (OrientedState) the methods integrate q̇ = ½ q ⊗ (0, ω) beside (m, γ), as the
+/// ten numbers (m, γ, q_w, q_x, q_y, q_z) (the error control of the adaptive methods covers q as
+/// well), and renormalise q after every step; each stepper reports the largest renormalisation
+/// |‖q‖ − 1| it applied (attitude_projection), the drift of ‖q‖ in one step. The ten-number
+/// steppers are odeint's same methods on the longer array, built beside the six-number ones, so
+/// that a run without an attitude runs exactly the code it ran before.
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <tuple>
 #include <type_traits>
 // Odeint's steppers copy their (not yet sized) scratch arrays on construction, which GCC 12 flags
 // as uninitialized use inside Boost's headers; silence that for Boost's lines only.
@@ -29,6 +37,7 @@
 
 #include "newtop/integrate/concepts.hpp"
 #include "newtop/integrate/dense_output.hpp"
+#include "newtop/model/attitude.hpp"
 #include "newtop/model/basic_model.hpp"
 
 namespace newtop {
@@ -43,17 +52,71 @@ inline State from_ode(const OdeState& y) {
   return {Vec3(y[0], y[1], y[2]), Vec3(y[3], y[4], y[5])};
 }
 
-/// The Euler–Poisson vector field in odeint's calling convention.
-template <Field F>
+/// The state with its attitude as odeint sees it: (m1, m2, m3, γ1, γ2, γ3, q_w, q_x, q_y, q_z).
+using OrientedOdeState = std::array<double, 10>;
+
+inline OrientedOdeState to_ode(const OrientedState& s) {
+  return {s.m[0],     s.m[1],  s.m[2],  s.gamma[0], s.gamma[1],
+          s.gamma[2], s.q.w(), s.q.x(), s.q.y(),    s.q.z()};
+}
+inline OrientedState from_ode(const OrientedOdeState& y) {
+  OrientedState s;
+  s.m = Vec3(y[0], y[1], y[2]);
+  s.gamma = Vec3(y[3], y[4], y[5]);
+  s.q = Quaternion(y[6], y[7], y[8], y[9]);
+  return s;
+}
+
+/// The ODE state for a state type: OdeState for State, OrientedOdeState for OrientedState.
+template <class X>
+using OdeStateOf = std::conditional_t<kOriented<X>, OrientedOdeState, OdeState>;
+
+/// The Euler–Poisson vector field in odeint's calling convention; on OrientedOdeState with
+/// q̇ = ½ q ⊗ (0, ω) beside it.
+template <Field F, class Y = OdeState>
 struct OdeSystem {
   const BasicModel<F>* model;
-  void operator()(const OdeState& y, OdeState& dydt, double /*t*/) const {
-    const State d = rhs(*model, from_ode(y));
-    dydt = to_ode(d);
+  void operator()(const Y& y, Y& dydt, double /*t*/) const {
+    if constexpr (std::is_same_v<Y, OdeState>) {
+      const State d = rhs(*model, from_ode(y));
+      dydt = to_ode(d);
+    } else {
+      const OrientedState x = from_ode(y);
+      const State d = rhs(*model, x);
+      const Quaternion dq = attitude_rate(x.q, omega(model->body, x));
+      dydt = {d.m[0],     d.m[1], d.m[2], d.gamma[0], d.gamma[1],
+              d.gamma[2], dq.w(), dq.x(), dq.y(),     dq.z()};
+    }
   }
 };
 
-/// Any odeint stepper run at a fixed step (its error estimate, if any, unused).
+namespace detail {
+
+/// An odeint stepper class template applied to another state type: Stepper<Y0, …> → Stepper<Y>.
+template <class S, class Y>
+struct RebindState;
+template <template <class...> class T, class Y0, class... Rest, class Y>
+struct RebindState<T<Y0, Rest...>, Y> {
+  using type = T<Y>;
+};
+template <class S, class Y>
+using RebindStateT = typename RebindState<S, Y>::type;
+
+/// Renormalises q in y (indices 6..9); returns |‖q‖ − 1| before it and scales `scaled` (q̇ at y,
+/// linear in q) alike when given.
+inline double renormalise(OrientedOdeState& y, OrientedOdeState* scaled = nullptr) {
+  const double n = std::sqrt(y[6] * y[6] + y[7] * y[7] + y[8] * y[8] + y[9] * y[9]);
+  for (int i = 6; i < 10; ++i) y[i] /= n;
+  if (scaled) {
+    for (int i = 6; i < 10; ++i) (*scaled)[i] /= n;
+  }
+  return std::abs(n - 1.0);
+}
+
+}  // namespace detail
+
+/// Any odeint stepper run at a fixed step (its error estimate, if any, unused); with an attitude,
+/// the same method on the ten numbers, q renormalised after each step.
 template <class OdeintStepper, int Order>
 class OdeintFixedStepper {
  public:
@@ -64,9 +127,20 @@ class OdeintFixedStepper {
     stepper_.do_step(OdeSystem<F>{&model}, y, 0.0, h);
     x = from_ode(y);
   }
+  template <Field F>
+  void step(const BasicModel<F>& model, OrientedState& x, double h) {
+    OrientedOdeState y = to_ode(x);
+    oriented_.do_step(OdeSystem<F, OrientedOdeState>{&model}, y, 0.0, h);
+    projection_ = std::max(projection_, detail::renormalise(y));
+    x = from_ode(y);
+  }
+  /// The largest renormalisation |‖q‖ − 1| of the attitude in one step so far.
+  double attitude_projection() const { return projection_; }
 
  private:
   OdeintStepper stepper_;
+  detail::RebindStateT<OdeintStepper, OrientedOdeState> oriented_;
+  double projection_ = 0.0;
 };
 
 /// Classical fourth-order Runge–Kutta, fixed step (odeint's runge_kutta4): the baseline.
@@ -78,8 +152,8 @@ namespace detail {
 /// the weights sc_i = abs_tol + rel_tol |y0_i| and the RMS norm, d0 = ‖y0‖, d1 = ‖f(y0)‖, an Euler
 /// step h0 = 0.01 d0/d1, d2 = ‖f(y0 + h0 f(y0)) − f(y0)‖ / h0 (a second-derivative estimate), and
 /// h = min(100 h0, (0.01 / max(d1, d2))^(1/order)), never beyond |span|.
-template <class Sys>
-double starting_step(const Sys& sys, const OdeState& y0, const OdeState& f0, double t0, double span,
+template <class Sys, class Y>
+double starting_step(const Sys& sys, const Y& y0, const Y& f0, double t0, double span,
                      double abs_tol, double rel_tol, int order) {
   auto rms = [&](const auto& term) {
     double s = 0;
@@ -94,7 +168,7 @@ double starting_step(const Sys& sys, const OdeState& y0, const OdeState& f0, dou
   double h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
   h0 = std::min(h0, std::abs(span));
   const double dir = span < 0 ? -1.0 : 1.0;
-  OdeState y1, f1;
+  Y y1, f1;
   for (std::size_t i = 0; i < y0.size(); ++i) y1[i] = y0[i] + dir * h0 * f0[i];
   sys(y1, f1, t0 + dir * h0);
   const double d2 = rms([&](std::size_t i) { return f1[i] - f0[i]; }) / h0;
@@ -104,47 +178,43 @@ double starting_step(const Sys& sys, const OdeState& y0, const OdeState& f0, dou
   return std::min({100 * h0, h1, std::abs(span)});
 }
 
-inline bool all_finite(const OdeState& y) {
+template <std::size_t N>
+inline bool all_finite(const std::array<double, N>& y) {
   return std::all_of(y.begin(), y.end(), [](double v) { return std::isfinite(v); });
 }
 
-}  // namespace detail
-
-/// An embedded Runge–Kutta pair with odeint's standard error control:
-/// err_i / (abs_tol + rel_tol (|y_i| + h |y'_i|)) ≤ 1 in the max norm. A non-finite trial is
-/// rejected (odeint's controller would accept an error estimate of NaN) and retried
-/// kNonFiniteShrink times shorter. After an accepted step, dense_state(model, t) is the method's
-/// continuous extension inside it: Dormand–Prince's own (order 4, odeint's calc_state); for
-/// Fehlberg 7(8), which has none, the Hermite interpolant of degree 7 (HermiteInterpolant) on the
-/// nodes θ = 0, 1/3, 2/3, 1 of the step, the inner values from steps of θh of the same formula from
-/// the step's start (built on first use: 26 more evaluations of f per interpolated step; error
-/// O(h^8), the order of the pair's error estimate).
+/// The embedded pair on one state type (odeint's state_type of ErrorStepper: OdeState, or
+/// OrientedOdeState for a state with an attitude); EmbeddedRkStepper holds one of each.
 template <class ErrorStepper, int Order>
-class EmbeddedRkStepper {
+class EmbeddedRkCore {
+  using Y = typename ErrorStepper::state_type;
   static constexpr bool kFsal =
       std::is_same_v<typename ErrorStepper::stepper_category,
                      boost::numeric::odeint::explicit_error_stepper_fsal_tag>;
+  static constexpr bool kWithAttitude = std::is_same_v<Y, OrientedOdeState>;
+  using X = std::conditional_t<kWithAttitude, OrientedState, State>;
+  // The Hermite interpolant works on points of six numbers: a longer state is cut into pieces.
+  static constexpr std::size_t kPoint = std::tuple_size_v<HermiteInterpolant::Point>;
+  static constexpr std::size_t kPieces = (std::tuple_size_v<Y> + kPoint - 1) / kPoint;
 
  public:
-  EmbeddedRkStepper(double abs_tol, double rel_tol)
+  EmbeddedRkCore(double abs_tol, double rel_tol)
       : abs_tol_(abs_tol),
         rel_tol_(rel_tol),
         controlled_(boost::numeric::odeint::make_controlled(abs_tol, rel_tol, ErrorStepper())) {}
 
-  int order() const { return Order; }
-
   template <Field F>
-  double initial_step(const BasicModel<F>& model, const State& x, double t0, double t1) {
-    const OdeSystem<F> sys{&model};
+  double initial_step(const BasicModel<F>& model, const X& x, double t0, double t1) {
+    const OdeSystem<F, Y> sys{&model};
     at_point(sys, to_ode(x), t0);
     return detail::starting_step(sys, y_, dydt_, t0, t1 - t0, abs_tol_, rel_tol_, Order);
   }
 
   template <Field F>
-  bool try_step(const BasicModel<F>& model, State& x, double& t, double& dt) {
-    const OdeSystem<F> sys{&model};
+  bool try_step(const BasicModel<F>& model, X& x, double& t, double& dt) {
+    const OdeSystem<F, Y> sys{&model};
     at_point(sys, to_ode(x), t);
-    OdeState y_new, dydt_new;
+    Y y_new, dydt_new;
     const double t_old = t, dt_tried = dt;
     boost::numeric::odeint::controlled_step_result r;
     if constexpr (kFsal) {
@@ -158,8 +228,12 @@ class EmbeddedRkStepper {
       dt = kNonFiniteShrink * dt_tried;
       return false;
     }
-    last_ = {t_old, t, y_, dydt_, y_new, dydt_new};
+    last_ = {t_old, t, y_, dydt_, y_new, dydt_new};  // the method's own end point, unprojected
     ++step_id_;
+    if constexpr (kWithAttitude) {
+      // q̇ is linear in q: the derivative at the renormalised point is the same rescaling.
+      projection_ = std::max(projection_, renormalise(y_new, kFsal ? &dydt_new : nullptr));
+    }
     y_ = y_new;
     dydt_ = dydt_new;
     has_dydt_ = kFsal;  // Fehlberg 7(8): f(y_new) is computed when first needed
@@ -167,33 +241,48 @@ class EmbeddedRkStepper {
     return true;
   }
 
-  /// The continuous extension of the last accepted step at t (between its ends).
+  /// The continuous extension of the last accepted step at t (between its ends); q renormalised.
   template <Field F>
-  State dense_state(const BasicModel<F>& model, double t) {
-    OdeState y;
+  X dense_state(const BasicModel<F>& model, double t) {
+    Y y;
     if constexpr (kFsal) {
       controlled_.stepper().calc_state(t, y, last_.y_old, last_.dydt_old, last_.t_old, last_.y_new,
                                        last_.dydt_new, last_.t_new);
     } else {
-      if (hermite_id_ != step_id_) build_hermite(OdeSystem<F>{&model});
-      y = hermite_((t - last_.t_old) / (last_.t_new - last_.t_old));
+      if (hermite_id_ != step_id_) build_hermite(OdeSystem<F, Y>{&model});
+      const double theta = (t - last_.t_old) / (last_.t_new - last_.t_old);
+      for (std::size_t p = 0; p < kPieces; ++p) {
+        const HermiteInterpolant::Point u = hermite_[p](theta);
+        for (std::size_t i = 0; i < kPoint && p * kPoint + i < y.size(); ++i)
+          y[p * kPoint + i] = u[i];
+      }
     }
+    if constexpr (kWithAttitude) renormalise(y);
     return from_ode(y);
   }
+
+  double attitude_projection() const { return projection_; }
 
  private:
   struct AcceptedStep {
     double t_old = 0, t_new = 0;
-    OdeState y_old{}, dydt_old{}, y_new{}, dydt_new{};
+    Y y_old{}, dydt_old{}, y_new{}, dydt_new{};
   };
 
   /// Makes (y_, dydt_) the point y and its derivative, evaluating f only for a new point.
   template <class Sys>
-  void at_point(const Sys& sys, const OdeState& y, double t) {
+  void at_point(const Sys& sys, const Y& y, double t) {
     if (has_dydt_ && y == y_) return;
     y_ = y;
     sys(y_, dydt_, t);
     has_dydt_ = true;
+  }
+
+  /// Piece p of a state: its numbers p·6 … p·6 + 5 (zero past the end).
+  static HermiteInterpolant::Point piece(const Y& y, std::size_t p) {
+    HermiteInterpolant::Point u{};
+    for (std::size_t i = 0; i < kPoint && p * kPoint + i < y.size(); ++i) u[i] = y[p * kPoint + i];
+    return u;
   }
 
   template <class Sys>
@@ -203,7 +292,7 @@ class EmbeddedRkStepper {
     at_point(sys, s.y_new, s.t_new);  // shared with the next step's first stage
     s.dydt_new = dydt_;
     constexpr std::array<double, 4> theta{0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0};
-    std::array<OdeState, 4> y{s.y_old, {}, {}, s.y_new}, f{s.dydt_old, {}, {}, s.dydt_new};
+    std::array<Y, 4> y{s.y_old, {}, {}, s.y_new}, f{s.dydt_old, {}, {}, s.dydt_new};
     for (int i = 1; i <= 2; ++i) {
       partial_.do_step(sys, s.y_old, s.dydt_old, s.t_old, y[i], theta[i] * h);
       sys(y[i], f[i], s.t_old + theta[i] * h);
@@ -211,18 +300,85 @@ class EmbeddedRkStepper {
     for (auto& fi : f) {
       for (double& v : fi) v *= h;
     }
-    hermite_ = HermiteInterpolant(theta, y, f);
+    for (std::size_t p = 0; p < kPieces; ++p) {
+      std::array<HermiteInterpolant::Point, 4> yp, fp;
+      for (std::size_t i = 0; i < 4; ++i) yp[i] = piece(y[i], p), fp[i] = piece(f[i], p);
+      hermite_[p] = HermiteInterpolant(theta, yp, fp);
+    }
     hermite_id_ = step_id_;
   }
 
   double abs_tol_, rel_tol_;
   typename boost::numeric::odeint::result_of::make_controlled<ErrorStepper>::type controlled_;
-  OdeState y_{}, dydt_{};  // the current point and f there (when has_dydt_)
+  Y y_{}, dydt_{};  // the current point and f there (when has_dydt_)
   bool has_dydt_ = false;
   AcceptedStep last_;
   std::int64_t step_id_ = 0, hermite_id_ = -1;
   ErrorStepper partial_;  // Fehlberg 7(8): the inner nodes of the interpolant
-  HermiteInterpolant hermite_;
+  std::array<HermiteInterpolant, kPieces> hermite_;
+  double projection_ = 0.0;
+};
+
+}  // namespace detail
+
+/// An embedded Runge–Kutta pair with odeint's standard error control:
+/// err_i / (abs_tol + rel_tol (|y_i| + h |y'_i|)) ≤ 1 in the max norm. A non-finite trial is
+/// rejected (odeint's controller would accept an error estimate of NaN) and retried
+/// kNonFiniteShrink times shorter. After an accepted step, dense_state(model, t) is the method's
+/// continuous extension inside it: Dormand–Prince's own (order 4, odeint's calc_state); for
+/// Fehlberg 7(8), which has none, the Hermite interpolant of degree 7 (HermiteInterpolant) on the
+/// nodes θ = 0, 1/3, 2/3, 1 of the step, the inner values from steps of θh of the same formula from
+/// the step's start (built on first use: 26 more evaluations of f per interpolated step; error
+/// O(h^8), the order of the pair's error estimate). A state with an attitude runs the same pair on
+/// the ten numbers (dense_oriented_state for its continuous extension).
+template <class ErrorStepper, int Order>
+class EmbeddedRkStepper {
+  using Plain = detail::EmbeddedRkCore<ErrorStepper, Order>;
+  using Oriented =
+      detail::EmbeddedRkCore<detail::RebindStateT<ErrorStepper, OrientedOdeState>, Order>;
+
+ public:
+  EmbeddedRkStepper(double abs_tol, double rel_tol)
+      : plain_(abs_tol, rel_tol), oriented_(abs_tol, rel_tol) {}
+
+  int order() const { return Order; }
+
+  template <Field F, PhaseState X>
+  double initial_step(const BasicModel<F>& model, const X& x, double t0, double t1) {
+    return core<X>().initial_step(model, x, t0, t1);
+  }
+
+  template <Field F, PhaseState X>
+  bool try_step(const BasicModel<F>& model, X& x, double& t, double& dt) {
+    return core<X>().try_step(model, x, t, dt);
+  }
+
+  /// The continuous extension of the last accepted step at t (between its ends).
+  template <Field F>
+  State dense_state(const BasicModel<F>& model, double t) {
+    return plain_.dense_state(model, t);
+  }
+  /// The same for a run with an attitude.
+  template <Field F>
+  OrientedState dense_oriented_state(const BasicModel<F>& model, double t) {
+    return oriented_.dense_state(model, t);
+  }
+
+  /// The largest renormalisation |‖q‖ − 1| of the attitude in one step so far.
+  double attitude_projection() const { return oriented_.attitude_projection(); }
+
+ private:
+  template <class X>
+  auto& core() {
+    if constexpr (kOriented<X>) {
+      return oriented_;
+    } else {
+      return plain_;
+    }
+  }
+
+  Plain plain_;
+  Oriented oriented_;
 };
 
 /// Dormand–Prince 5(4) (odeint's runge_kutta_dopri5), order 5.

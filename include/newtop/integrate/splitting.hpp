@@ -7,14 +7,23 @@
 /// taken from a CompositionTable. Every sub-flow preserves γ·γ and m·γ exactly and is a Poisson
 /// map, so every step is a Poisson integrator. One generic loop runs every table; the sub-flows of
 /// T are unrolled at compile time (sub_flows.hpp), and the per-model constants are computed once.
+///
+/// A state with an attitude (OrientedState) carries the rows of R, Rᵀ e_a, through the step as
+/// passengers of every sub-flow: each rotation turns them with the same sin θ and cos θ − 1 as it
+/// turns γ, the spin and the exact free-body flow apply to them the same map as to γ, and the kick
+/// leaves them. R is converted to its quaternion (Eigen) at the end of the step and renormalised;
+/// the stepper reports the largest renormalisation, |‖q‖ − 1| (round-off).
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "newtop/integrate/composition_tables.hpp"
 #include "newtop/integrate/sub_flows.hpp"
+#include "newtop/model/attitude.hpp"
 #include "newtop/model/basic_model.hpp"
 
 namespace newtop {
@@ -79,6 +88,9 @@ SplitFrame split_frame(const Body& body, const SplitOrdering& ordering);
 /// Exact free-body flow of a body-frame state over t (free_body_flow.cpp); declared here so that
 /// the stepper can run it as T.
 State free_body_flow(const Body& body, const State& x, double t);
+/// The same, with the rotation G of the flow: γ(t) = G γ(0), and every body-frame vector fixed in
+/// space moves alike (the rows of the attitude: R(t)ᵀ = G R(0)ᵀ).
+State free_body_flow(const Body& body, const State& x, double t, Mat3& rotation);
 
 namespace detail {
 
@@ -109,6 +121,53 @@ inline void to_state(const Phase& z, State& x) {
   }
 }
 
+/// The rows of the attitude R (the inertial axes in the body frame, Rᵀ e_a) in the frame P, as the
+/// passengers of the sub-flows: (row 0, row 1) in `a`, row 2 in both lanes of `b`.
+struct AttitudePhase {
+  Phase a, b;
+};
+
+template <class P>
+inline AttitudePhase to_attitude_phase(const Quaternion& q) {
+  const Mat3 R = q.toRotationMatrix();
+  AttitudePhase r;
+  for (int w = 0; w < 3; ++w) {
+    const int i = P::axis[w];
+    r.a.v[w] = P::sign[w] * Pair<double>{R(0, i), R(1, i)};
+    r.b.v[w] = P::sign[w] * Pair<double>{R(2, i), R(2, i)};
+  }
+  return r;
+}
+
+/// The quaternion of the rows, renormalised; returns |‖q‖ − 1| before the renormalisation.
+template <class P>
+inline double from_attitude_phase(const AttitudePhase& r, Quaternion& q) {
+  Mat3 R;
+  for (int w = 0; w < 3; ++w) {
+    const int i = P::axis[w];
+    R(0, i) = P::sign[w] * r.a.m(w);
+    R(1, i) = P::sign[w] * r.a.g(w);
+    R(2, i) = P::sign[w] * r.b.m(w);
+  }
+  q = Quaternion(R);
+  const double n = q.norm();
+  q.coeffs() /= n;
+  return std::abs(n - 1.0);
+}
+
+/// Both lanes of a passenger mapped by the body-frame matrix G.
+template <class P>
+inline void apply_rotation(const Mat3& G, Phase& a) {
+  Vec3 x, y;
+  for (int w = 0; w < 3; ++w) {
+    x[P::axis[w]] = P::sign[w] * a.m(w);
+    y[P::axis[w]] = P::sign[w] * a.g(w);
+  }
+  x = G * x;
+  y = G * y;
+  for (int w = 0; w < 3; ++w) a.set(w, P::sign[w] * x[P::axis[w]], P::sign[w] * y[P::axis[w]]);
+}
+
 /// The kick over t: m += t γ × ∂V/∂γ, the moment computed by moment(model, γ) in the body frame.
 template <class P, Field F>
 inline void kick(Phase& z, const BasicModel<F>& model, double t) {
@@ -120,80 +179,102 @@ inline void kick(Phase& z, const BasicModel<F>& model, double t) {
 
 /// T(t) by rotations about the three axes, Strang-split (FreeBodySplit::axes).
 struct AxesFlow {
-  template <class P>
-  static void flow(Phase& z, const SplitFrame& f, const Body&, double t) {
+  template <class P, class... A>
+  static void flow(Phase& z, const SplitFrame& f, const Body&, double t, A&... a) {
     const double t2 = 0.5 * t;
-    axis_flow<0>(z, t2 * f.rate[0], -t2 * f.k_over_i[0]);
-    axis_flow<1>(z, t2 * f.rate[1], -t2 * f.k_over_i[1]);
-    axis_flow<2>(z, t * f.rate[2], -t * f.k_over_i[2]);
-    axis_flow<1>(z, t2 * f.rate[1], -t2 * f.k_over_i[1]);
-    axis_flow<0>(z, t2 * f.rate[0], -t2 * f.k_over_i[0]);
+    axis_flow<0>(z, t2 * f.rate[0], -t2 * f.k_over_i[0], a...);
+    axis_flow<1>(z, t2 * f.rate[1], -t2 * f.k_over_i[1], a...);
+    axis_flow<2>(z, t * f.rate[2], -t * f.k_over_i[2], a...);
+    axis_flow<1>(z, t2 * f.rate[1], -t2 * f.k_over_i[1], a...);
+    axis_flow<0>(z, t2 * f.rate[0], -t2 * f.k_over_i[0], a...);
   }
 };
 
 /// T(t) by the spin split (FreeBodySplit::spin); Gyrostat: k_r ≠ 0.
 template <bool Gyrostat>
 struct SpinFlow {
-  template <class P>
-  static void flow(Phase& z, const SplitFrame& f, const Body&, double t) {
+  template <class P, class... A>
+  static void flow(Phase& z, const SplitFrame& f, const Body&, double t, A&... a) {
     const double t2 = 0.5 * t;
-    spin_flow(z, t * f.inv_ref);
-    axis_flow<0>(z, t2 * f.rate[0], -t2 * f.k_over_i[0]);
+    spin_flow(z, t * f.inv_ref, a...);
+    axis_flow<0>(z, t2 * f.rate[0], -t2 * f.k_over_i[0], a...);
     if constexpr (Gyrostat) {
-      axis_flow<1>(z, t2 * f.rate[1], -t2 * f.k_over_i[1]);
-      axis_flow<2>(z, 0.0, -t * f.k_over_i[2]);
-      axis_flow<1>(z, t2 * f.rate[1], -t2 * f.k_over_i[1]);
+      axis_flow<1>(z, t2 * f.rate[1], -t2 * f.k_over_i[1], a...);
+      axis_flow<2>(z, 0.0, -t * f.k_over_i[2], a...);
+      axis_flow<1>(z, t2 * f.rate[1], -t2 * f.k_over_i[1], a...);
     } else {
-      axis_flow<1>(z, t * f.rate[1], -t * f.k_over_i[1]);
+      axis_flow<1>(z, t * f.rate[1], -t * f.k_over_i[1], a...);
     }
-    axis_flow<0>(z, t2 * f.rate[0], -t2 * f.k_over_i[0]);
+    axis_flow<0>(z, t2 * f.rate[0], -t2 * f.k_over_i[0], a...);
   }
 };
 
 /// T(t) exact (FreeBodySplit::exact).
 struct ExactFlow {
-  template <class P>
-  static void flow(Phase& z, const SplitFrame&, const Body& body, double t) {
+  template <class P, class... A>
+  static void flow(Phase& z, const SplitFrame&, const Body& body, double t, A&... a) {
     State x;
     to_state<P>(z, x);
-    z = to_phase<P>(free_body_flow(body, x, t));
+    if constexpr (sizeof...(A) == 0) {
+      z = to_phase<P>(free_body_flow(body, x, t));
+    } else {
+      Mat3 G;
+      z = to_phase<P>(free_body_flow(body, x, t, G));
+      (apply_rotation<P>(G, a), ...);
+    }
   }
 };
 
-/// One step in the frame P: the generic loop over the coefficients.
-template <class P, class T, Field F>
-[[gnu::flatten]] void run_step(const BasicModel<F>& model, State& x, const SplitFrame& f,
-                               const SplittingCoefficients& c, double h) {
+/// What a step kernel returns: nothing, or with an attitude its renormalisation |‖q‖ − 1|.
+template <class X>
+using StepResult = std::conditional_t<kOriented<X>, double, void>;
+
+/// One step in the frame P: the generic loop over the coefficients (with an attitude, its rows
+/// carried as passengers).
+template <class P, class T, Field F, class X>
+[[gnu::flatten]] StepResult<X> run_step(const BasicModel<F>& model, X& x, const SplitFrame& f,
+                                        const SplittingCoefficients& c, double h) {
   Phase z = to_phase<P>(x);
   const std::size_t s = c.a.size();
-  for (std::size_t i = 0; i < s; ++i) {
-    if (c.b[i] != 0.0) kick<P>(z, model, c.b[i] * h);
-    T::template flow<P>(z, f, model.body, c.a[i] * h);
+  if constexpr (kOriented<X>) {
+    AttitudePhase r = to_attitude_phase<P>(x.q);
+    for (std::size_t i = 0; i < s; ++i) {
+      if (c.b[i] != 0.0) kick<P>(z, model, c.b[i] * h);
+      T::template flow<P>(z, f, model.body, c.a[i] * h, r.a, r.b);
+    }
+    if (c.b[s] != 0.0) kick<P>(z, model, c.b[s] * h);
+    to_state<P>(z, x);
+    return from_attitude_phase<P>(r, x.q);
+  } else {
+    for (std::size_t i = 0; i < s; ++i) {
+      if (c.b[i] != 0.0) kick<P>(z, model, c.b[i] * h);
+      T::template flow<P>(z, f, model.body, c.a[i] * h);
+    }
+    if (c.b[s] != 0.0) kick<P>(z, model, c.b[s] * h);
+    to_state<P>(z, x);
   }
-  if (c.b[s] != 0.0) kick<P>(z, model, c.b[s] * h);
-  to_state<P>(z, x);
 }
 
-template <Field F>
-using StepKernel = void (*)(const BasicModel<F>&, State&, const SplitFrame&,
-                            const SplittingCoefficients&, double);
+template <Field F, class X = State>
+using StepKernel = StepResult<X> (*)(const BasicModel<F>&, X&, const SplitFrame&,
+                                     const SplittingCoefficients&, double);
 
 /// The kernel of T for the permutation (axis[0], axis[1], axis[2]).
-template <class T, Field F>
-StepKernel<F> step_kernel(const std::array<int, 3>& axis) {
+template <class T, Field F, class X = State>
+StepKernel<F, X> step_kernel(const std::array<int, 3>& axis) {
   switch (axis[0] * 3 + axis[1]) {
     case 1:
-      return &run_step<Axes<0, 1, 2>, T, F>;
+      return &run_step<Axes<0, 1, 2>, T, F, X>;
     case 2:
-      return &run_step<Axes<0, 2, 1>, T, F>;
+      return &run_step<Axes<0, 2, 1>, T, F, X>;
     case 3:
-      return &run_step<Axes<1, 0, 2>, T, F>;
+      return &run_step<Axes<1, 0, 2>, T, F, X>;
     case 5:
-      return &run_step<Axes<1, 2, 0>, T, F>;
+      return &run_step<Axes<1, 2, 0>, T, F, X>;
     case 6:
-      return &run_step<Axes<2, 0, 1>, T, F>;
+      return &run_step<Axes<2, 0, 1>, T, F, X>;
     default:
-      return &run_step<Axes<2, 1, 0>, T, F>;
+      return &run_step<Axes<2, 1, 0>, T, F, X>;
   }
 }
 
@@ -217,8 +298,12 @@ class SplittingStepper {
   /// The most sub-flows (kicks, rotations, spins or exact free-body flows) one step applies.
   std::size_t stages() const;
 
-  template <Field F>
-  void step(const BasicModel<F>& model, State& x, double h);
+  /// One step of x (m, γ, and the attitude when X = OrientedState).
+  template <Field F, PhaseState X>
+  void step(const BasicModel<F>& model, X& x, double h);
+
+  /// The largest renormalisation |‖q‖ − 1| of the attitude in one step so far (0 without one).
+  double attitude_projection() const { return projection_; }
 
  private:
   int order_;
@@ -228,29 +313,35 @@ class SplittingStepper {
   Vec3 inertia_key_ = Vec3::Constant(NAN);
   Vec3 gyrostat_key_ = Vec3::Constant(NAN);
   SplitFrame frame_;
+  double projection_ = 0.0;
 };
 
-template <Field F>
-void SplittingStepper::step(const BasicModel<F>& model, State& x, double h) {
+template <Field F, PhaseState X>
+void SplittingStepper::step(const BasicModel<F>& model, X& x, double h) {
   if (model.body.inertia() != inertia_key_ || model.body.gyrostat() != gyrostat_key_) {
     frame_ = split_frame(model.body, ordering_);
     inertia_key_ = model.body.inertia();
     gyrostat_key_ = model.body.gyrostat();
   }
-  detail::StepKernel<F> kernel = nullptr;
+  detail::StepKernel<F, X> kernel = nullptr;
   switch (ordering_.free_body) {
     case FreeBodySplit::axes:
-      kernel = detail::step_kernel<detail::AxesFlow, F>(frame_.axis);
+      kernel = detail::step_kernel<detail::AxesFlow, F, X>(frame_.axis);
       break;
     case FreeBodySplit::spin:
-      kernel = frame_.gyrostat_ref ? detail::step_kernel<detail::SpinFlow<true>, F>(frame_.axis)
-                                   : detail::step_kernel<detail::SpinFlow<false>, F>(frame_.axis);
+      kernel = frame_.gyrostat_ref
+                   ? detail::step_kernel<detail::SpinFlow<true>, F, X>(frame_.axis)
+                   : detail::step_kernel<detail::SpinFlow<false>, F, X>(frame_.axis);
       break;
     case FreeBodySplit::exact:
-      kernel = &detail::run_step<detail::Axes<0, 1, 2>, detail::ExactFlow, F>;
+      kernel = &detail::run_step<detail::Axes<0, 1, 2>, detail::ExactFlow, F, X>;
       break;
   }
-  kernel(model, x, frame_, coefficients_, h);
+  if constexpr (kOriented<X>) {
+    projection_ = std::max(projection_, kernel(model, x, frame_, coefficients_, h));
+  } else {
+    kernel(model, x, frame_, coefficients_, h);
+  }
 }
 
 }  // namespace newtop

@@ -147,18 +147,36 @@ inline void rotate(PhaseT<R>& z, R s, R cm1) {
 /// The flow of ½α m_I² + β m_I over time t (β = −k_I/I_I for the kinetic energy ½(m_I − k_I)²/I_I
 /// with α = 1/I_I): m and γ turn about e_I by θ = t α m_I + t β. The arguments are ta = t α and
 /// tb = t β, computed by the caller off the serial chain through m.
-template <int I, class R>
-inline void axis_flow(PhaseT<R>& z, R ta, R tb) {
+///
+/// Passengers (pairs of body-frame vectors held as PhaseT, e.g. the rows of the attitude R) turn
+/// with the same sin θ and cos θ − 1.
+template <int I, class R, class... A>
+inline void axis_flow(PhaseT<R>& z, R ta, R tb, A&... passengers) {
   R s, cm1;
   sin_cosm1(z.m(I) * ta + tb, s, cm1);
   rotate<I>(z, s, cm1);
+  (rotate<I>(passengers, s, cm1), ...);
+}
+
+/// Both lanes x of a pair of vectors turned by Rodrigues' formula x' = x + f₁ u × x + f₂ u × (u ×
+/// x).
+template <class R>
+inline void rodrigues(PhaseT<R>& a, R u0, R u1, R u2, R f1, R f2) {
+  const Pair<R> x0 = a.v[0], x1 = a.v[1], x2 = a.v[2];
+  const Pair<R> U0{u0, u0}, U1{u1, u1}, U2{u2, u2}, F1{f1, f1}, F2{f2, f2};
+  const Pair<R> c0 = U1 * x2 - U2 * x1, c1 = U2 * x0 - U0 * x2, c2 = U0 * x1 - U1 * x0;
+  const Pair<R> d0 = U1 * c2 - U2 * c1, d1 = U2 * c0 - U0 * c2, d2 = U0 * c1 - U1 * c0;
+  a.v[0] = x0 + (F1 * c0 + F2 * d0);
+  a.v[1] = x1 + (F1 * c1 + F2 * d1);
+  a.v[2] = x2 + (F1 * c2 + F2 * d2);
 }
 
 /// The flow of ½|m|²/I over time t (tau = t/I): m is constant and γ turns about m by −τ|m|
 /// (γ̇ = γ × m/I), by Rodrigues' formula with u = −τ m: γ' = γ + f₁ u × γ + f₂ u × (u × γ),
 /// f₁ = sin φ/φ, f₂ = (1 − cos φ)/φ², φ = |u|. No square root for the usual small angles.
-template <class R>
-inline void spin_flow(PhaseT<R>& z, R tau) {
+/// Passengers (both lanes) turn by the same formula with the same u, f₁ and f₂.
+template <class R, class... A>
+inline void spin_flow(PhaseT<R>& z, R tau, A&... passengers) {
   const R m0 = z.m(0), m1 = z.m(1), m2 = z.m(2);
   const R u0 = -tau * m0, u1 = -tau * m1, u2 = -tau * m2;
   R f1, f2;
@@ -169,6 +187,7 @@ inline void spin_flow(PhaseT<R>& z, R tau) {
   z.set(0, m0, g0 + (f1 * c0 + f2 * d0));
   z.set(1, m1, g1 + (f1 * c1 + f2 * d1));
   z.set(2, m2, g2 + (f1 * c2 + f2 * d2));
+  (rodrigues(passengers, u0, u1, u2, f1, f2), ...);
 }
 
 }  // namespace newtop

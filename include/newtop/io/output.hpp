@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "newtop/model/attitude.hpp"
 #include "newtop/model/integrals.hpp"
 
 namespace newtop::io {
@@ -47,18 +48,31 @@ class AtomicFile {
 /// SIGINT/SIGTERM handler before the process terminates.
 void remove_open_temporaries() noexcept;
 
-/// CSV trajectory: `t,p,q,r,gamma1,gamma2,gamma3,energy,area,geometric[,brun][,lagrange]`,
-/// numbers in shortest round-trip form; the integrals are those of the model's own field
-/// (integrals(Model, s)), brun and lagrange only where they hold.
+/// The attitude columns of a CSV trajectory.
+struct AttitudeColumns {
+  /// q0,q1,q2,q3: the attitude quaternion (body → inertial), scalar first.
+  bool quaternion = false;
+  /// 0 for none; 321: euler321_psi,euler321_theta,euler321_phi; 313:
+  /// euler313_phi,euler313_theta,euler313_psi (radians, newtop/model/attitude.hpp).
+  int euler = 0;
+};
+
+/// CSV trajectory: `t,p,q,r,gamma1,gamma2,gamma3,energy,area,geometric[,brun][,lagrange]`, then
+/// the attitude columns asked for, numbers in shortest round-trip form; the integrals are those of
+/// the model's own field (integrals(Model, s)), brun and lagrange only where they hold.
 class CsvTrajectory {
  public:
-  CsvTrajectory(std::ostream& out, const Model& model);
+  CsvTrajectory(std::ostream& out, const Model& model, AttitudeColumns attitude = {});
   void write(double t, const State& s);
+  /// A row with the attitude columns (of s.q).
+  void write(double t, const OrientedState& s);
 
  private:
+  void append(double t, const State& s);
   std::ostream& out_;
   const Model& model_;
   bool brun_ = false, lagrange_ = false;
+  AttitudeColumns attitude_;
   std::string line_;
 };
 

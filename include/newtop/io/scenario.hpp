@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "newtop/integrate/methods.hpp"
+#include "newtop/model/attitude.hpp"
 #include "newtop/model/model.hpp"
 
 namespace newtop::io {
@@ -38,6 +39,10 @@ struct Scenario {
   /// [mass_model], the body is the mass model's (principal axes as for inertia_tensor).
   Model model;
   State initial;
+  /// The attitude at t0 (body → inertial) of the principal axes, the frame of `initial`, when
+  /// [initial] gives one (quaternion, rotation_matrix, euler_321 or euler_313, which give that of
+  /// the file's frame: R = R_file P, P the principal axes in the file's frame).
+  std::optional<Quaternion> attitude;
   IntegrateSection integrate;
   OutputSection output;
   /// Every file the scenario was read from: the scenario itself and a [mass_model] file (an output
