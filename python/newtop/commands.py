@@ -124,7 +124,9 @@ def simulate(scenario, **options):
     """``newtop simulate SCENARIO --json [options]`` as a dict, with the trajectory.
 
     Adds ``trajectory``: the dict of ``newtop.integrate`` for the same scenario and options (t,
-    omega, gamma, m and the integrals at every accepted step, numpy views of one buffer). The
+    omega, gamma, m and the integrals at every accepted step, numpy views of one buffer), and the
+    same arrays at the top level: ``t`` (N), ``omega``, ``gamma``, ``m`` (N x 3), ``energy``,
+    ``area``, ``geometric`` (and ``brun``, ``lagrange`` where they hold) (N). The
     options ``t_end``, ``method``, ``step`` and ``tol`` apply to both; ``out``, ``every``,
     ``dt_out`` and ``times`` only to the CSV file the command writes.
     """
@@ -133,7 +135,13 @@ def simulate(scenario, **options):
     if not _newtop.is_orbit_scenario(path):  # orbit scenarios: the JSON only, for now
         sc = scenario if isinstance(scenario, _newtop.Scenario) else _newtop.load_scenario(path)
         keys = {k: options.get(k) for k in ("t_end", "method", "step", "tol")}
-        result["trajectory"] = _newtop.integrate(sc, **keys)
+        trajectory = _newtop.integrate(sc, **keys)
+        result["trajectory"] = trajectory
+        # the trajectory's arrays also at the top level (views of the same buffer)
+        for name in ("t", "omega", "gamma", "m", "energy", "area", "geometric", "brun",
+                     "lagrange"):
+            if name in trajectory:
+                result[name] = trajectory[name]
     return result
 
 

@@ -86,6 +86,8 @@ def test_simulate_json_and_trajectory_match_the_program_bit_for_bit(tmp_path):
     for name in ("energy", "area", "geometric", "brun"):
         assert np.array_equal(tr[name], table[:, header.index(name)]), name
     assert np.array_equal(tr["m"][-1], result["final"]["m"])
+    for name in ("t", "omega", "gamma", "m", "energy", "area", "geometric", "brun"):
+        assert result[name] is tr[name], name  # the same arrays at the top level
     assert tr["outcome"] == result["outcome"]
 
 
