@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Methods by name, for scenario files and the command line, and one call that runs any of them.
+/// One call that runs any method by name (method_settings.hpp: the names and their settings).
 
 #include <optional>
 #include <span>
@@ -8,45 +8,12 @@
 #include <string_view>
 
 #include "newtop/integrate/driver.hpp"
+#include "newtop/integrate/method_settings.hpp"
 #include "newtop/integrate/output_times.hpp"
 #include "newtop/integrate/runge_kutta.hpp"
 #include "newtop/integrate/splitting.hpp"
 
 namespace newtop {
-
-enum class MethodKind { splitting, fixed_rk, adaptive };
-
-struct MethodInfo {
-  std::string_view name;
-  MethodKind kind;
-  int order;
-  std::string_view description;
-};
-
-/// Every method newtop can run: the splitting compositions, rk4, dopri5, rkf78.
-std::span<const MethodInfo> methods();
-/// The method with this name; throws InputError listing the known names if there is none.
-const MethodInfo& method_info(std::string_view name);
-
-/// Default method when only a step is given: the splitting method with the best work–precision
-/// at moderate accuracy (docs/performance.md).
-inline constexpr std::string_view kDefaultFixedMethod = "splitting6";
-/// Default method when only a tolerance is given.
-inline constexpr std::string_view kDefaultAdaptiveMethod = "rkf78";
-
-/// What to run: a method by name with its step (fixed-step methods) or tolerances (adaptive).
-struct MethodSettings {
-  std::string name{kDefaultFixedMethod};
-  double step = 0.0;
-  double abs_tol = 1e-12;
-  double rel_tol = 1e-12;
-  /// Splitting methods: the ordering of the split; default_ordering(table) when absent.
-  std::optional<SplitOrdering> ordering;
-};
-
-/// Checks the settings (known name, a step > 0 for fixed-step methods, tolerances > 0 for adaptive
-/// ones); throws InputError naming the field.
-void validate(const MethodSettings& settings);
 
 /// Calls fn(stepper) with a stepper of the named method (settings validated) and returns its
 /// result.

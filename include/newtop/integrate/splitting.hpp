@@ -28,35 +28,6 @@
 
 namespace newtop {
 
-/// How the free-body flow T is computed.
-enum class FreeBodySplit {
-  /// Strang splitting into rotations about the three body axes:
-  /// T(t) = R_i(t/2) R_j(t/2) R_k(t) R_j(t/2) R_i(t/2), with (i, j, k) = axes.
-  axes,
-  /// ½ m·I⁻¹m = ½|m|²/I_r + ½ Σ α_i m_i² with α_i = 1/I_i − 1/I_r and r = axes[2]: the |m|² flow (γ
-  /// turns about m, m fixed) commutes with the rest and is exact; the rest is split into rotations
-  /// about the two other axes: T(t) = S(t) R'_i(t/2) R'_j(t) R'_i(t/2), (i, j) = (axes[0],
-  /// axes[1]).
-  /// A gyrostatic k_r ≠ 0 adds a rotation of constant angle about e_r in the middle.
-  spin,
-  /// The exact Euler–Poinsot flow (free_body_flow.hpp); needs k = 0.
-  exact,
-};
-
-/// How the base method is built from the free-body flow T and the kick K.
-/// kick_outside: K(h/2) T(h) K(h/2); otherwise T(h/2) K(h) T(h/2). With by_moment, axes name the
-/// axes by increasing moment (0 = least, 2 = largest) rather than x, y, z. The orderings' errors
-/// differ by up to a factor ~40 on a generic body (docs/performance.md, "Ordering of the split").
-struct SplitOrdering {
-  std::array<int, 3> axes{0, 1, 2};
-  bool kick_outside = false;
-  bool by_moment = true;
-  FreeBodySplit free_body = FreeBodySplit::axes;
-};
-
-/// The measured best ordering for a table (docs/performance.md): see splitting.cpp.
-SplitOrdering default_ordering(const CompositionTable& table);
-
 /// The step as alternating kicks and free-body flows, K(b₀h) T(a₁h) K(b₁h) … T(a_s h) K(b_s h)
 /// (b.size() = a.size() + 1; a zero kick is skipped).
 struct SplittingCoefficients {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "newtop/integrate/methods.hpp"
+#include "newtop/integrate/method_settings.hpp"
 #include "newtop/model/attitude.hpp"
 #include "newtop/model/model.hpp"
 

@@ -1,0 +1,50 @@
+#pragma once
+/// \file
+/// Methods by name, for scenario files and the command line: what each is and the settings of a
+/// run. Declarations only (no stepper), so that readers of scenarios need not compile the
+/// integrators; methods.hpp runs them.
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "newtop/integrate/composition_tables.hpp"
+
+namespace newtop {
+
+enum class MethodKind { splitting, fixed_rk, adaptive };
+
+struct MethodInfo {
+  std::string_view name;
+  MethodKind kind;
+  int order;
+  std::string_view description;
+};
+
+/// Every method newtop can run: the splitting compositions, rk4, dopri5, rkf78.
+std::span<const MethodInfo> methods();
+/// The method with this name; throws InputError listing the known names if there is none.
+const MethodInfo& method_info(std::string_view name);
+
+/// Default method when only a step is given: the splitting method with the best work–precision
+/// at moderate accuracy (docs/performance.md).
+inline constexpr std::string_view kDefaultFixedMethod = "splitting6";
+/// Default method when only a tolerance is given.
+inline constexpr std::string_view kDefaultAdaptiveMethod = "rkf78";
+
+/// What to run: a method by name with its step (fixed-step methods) or tolerances (adaptive).
+struct MethodSettings {
+  std::string name{kDefaultFixedMethod};
+  double step = 0.0;
+  double abs_tol = 1e-12;
+  double rel_tol = 1e-12;
+  /// Splitting methods: the ordering of the split; default_ordering(table) when absent.
+  std::optional<SplitOrdering> ordering;
+};
+
+/// Checks the settings (known name, a step > 0 for fixed-step methods, tolerances > 0 for adaptive
+/// ones); throws InputError naming the field.
+void validate(const MethodSettings& settings);
+
+}  // namespace newtop
