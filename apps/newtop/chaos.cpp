@@ -11,7 +11,6 @@
 #include "command.hpp"
 #include "integration_options.hpp"
 #include "interrupt.hpp"
-#include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "summary.hpp"
 
@@ -39,12 +38,7 @@ void write_row(std::ostream& os, const phase::ChaosSample& s) {
 }
 
 int run(const ChaosArgs& a) {
-  if (io::is_orbit_scenario(a.scenario)) {
-    throw InputError(
-        "scenario: expected a body scenario ([body], [field], [initial]), found an "
-        "orbit scenario ([orbit])");
-  }
-  const io::Scenario sc = io::load_scenario(a.scenario);
+  const io::Scenario sc = load_body_scenario(a.scenario);
   const RunSettings run = resolve_run(sc, a.integration);
   phase::check_tangent_method(run.method);
   std::unique_ptr<io::AtomicFile> file;

@@ -2,6 +2,8 @@
 
 #include "integration_options.hpp"
 
+#include "newtop/io/orbit_scenario.hpp"
+
 namespace newtop::app {
 
 void add_integration_options(CLI::App& sub, std::optional<double>& t_end,
@@ -44,6 +46,15 @@ RunSettings resolve_run(const io::Scenario& sc, const IntegrationArgs& a) {
   if (sc.integrate.max_steps) r.options.max_steps = *sc.integrate.max_steps;
   check_run_span(sc, r.method, r.t0, r.t_end, r.options);
   return r;
+}
+
+io::Scenario load_body_scenario(const std::string& path) {
+  if (io::is_orbit_scenario(path)) {
+    throw InputError(
+        "scenario: expected a body scenario ([body], [field], [initial]), found an "
+        "orbit scenario ([orbit])");
+  }
+  return io::load_scenario(path);
 }
 
 }  // namespace newtop::app

@@ -37,6 +37,10 @@ struct RunSettings {
   IntegrateOptions options;
 };
 
+/// io::load_scenario for the commands of the fixed-centre model only: an orbit scenario
+/// (docs/orbit.md) is bad input, named as such.
+io::Scenario load_body_scenario(const std::string& path);
+
 /// resolve_method, resolve_t_end and check_run_span, as `simulate` does them.
 RunSettings resolve_run(const io::Scenario& sc, const IntegrationArgs& a);
 

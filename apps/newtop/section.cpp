@@ -9,7 +9,6 @@
 #include "command.hpp"
 #include "integration_options.hpp"
 #include "interrupt.hpp"
-#include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "summary.hpp"
 
@@ -77,12 +76,7 @@ int run(const SectionArgs& a) {
   if (a.crossings < 1) {
     throw InputError("--crossings: expected an integer >= 1, found " + std::to_string(a.crossings));
   }
-  if (io::is_orbit_scenario(a.scenario)) {
-    throw InputError(
-        "scenario: expected a body scenario ([body], [field], [initial]), found an "
-        "orbit scenario ([orbit])");
-  }
-  const io::Scenario sc = io::load_scenario(a.scenario);
+  const io::Scenario sc = load_body_scenario(a.scenario);
   const RunSettings run = resolve_run(sc, a.integration);
   std::optional<phase::Levels> levels;
   std::vector<State> starts{sc.initial};
