@@ -128,6 +128,11 @@ def sweep_figures(g: Gallery):
     g.add("sweep_beletsky.png", plot.figure(results.load(atlas), quantity="max_real_part"), [c],
           ["Sweep: max_real_part over stability.omega × body.inertia[2]"],
           ["stability.omega", "body.inertia[2]"])
+    megno = g.file("sweep_megno.csv")
+    c = g.run("sweep", example("sweep_megno.toml"), "--quiet", "--out", megno)[0]
+    g.add("sweep_megno.png", plot.figure(results.load(megno), quantity="megno"), [c],
+          ["Sweep: megno over initial.omega[0] × initial.omega[1]"],
+          ["initial.omega[0]", "initial.omega[1]"])
 
 
 def phase_figures(g: Gallery):
