@@ -3,9 +3,9 @@
 
 #include "sweep_points.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "../io/toml_parse.hpp"
 #include "../io/toml_reader.hpp"
@@ -49,20 +49,39 @@ KeyPath split_key(const SweepFile& s, const std::string& key) {
   return p;
 }
 
-/// Sets the swept scenario keys of point `values` in the base's table.
-void set_keys(const SweepFile& s, toml::table& base, const std::vector<double>& values) {
+/// The byte offset in `text` of a toml++ source position (1-based line, 1-based column counted in
+/// code points).
+std::size_t byte_offset(const std::string& text, const toml::source_position& pos) {
+  std::size_t i = 0;
+  for (toml::source_index line = 1; line < pos.line && i < text.size(); ++i) {
+    if (text[i] == '\n') ++line;
+  }
+  for (toml::source_index column = 1; column < pos.column && i < text.size(); ++column) {
+    ++i;  // past one code point: its lead byte and its continuation bytes
+    while (i < text.size() && (static_cast<unsigned char>(text[i]) & 0xC0) == 0x80) ++i;
+  }
+  return i;
+}
+
+/// The base scenario's text with the swept scenario keys of point `values` written in place of
+/// their values (17 significant digits): the rest of the file, its comments and its line numbers
+/// stay as they are. toml++ locates each value (its source region).
+std::string set_keys(const SweepFile& s, const std::vector<double>& values) {
+  const toml::table base = io::parse_toml(s.base_text, s.base_source);
+  std::vector<std::pair<std::size_t, std::size_t>> spans;  // [begin, end) of each value
+  std::vector<std::string> texts;
   for (std::size_t k = 0; k < s.axes.size(); ++k) {
     const std::string& key = s.axes[k].key;
     if (key == "stability.omega") continue;
     const KeyPath p = split_key(s, key);
-    toml::table* t = base[p.table].as_table();
-    toml::node* n = t ? t->get(p.key) : nullptr;
+    const toml::table* t = base[p.table].as_table();
+    const toml::node* n = t ? t->get(p.key) : nullptr;
     if (!n) {
       throw InputError(s.source + ": [[axes]] key '" + key + "': expected a key of " +
                        s.base_source + ", found no [" + p.table + "] " + p.key + " there");
     }
     if (p.index) {
-      toml::array* a = n->as_array();
+      const toml::array* a = n->as_array();
       if (!a) {
         throw InputError(s.source + ": [[axes]] key '" + key + "': expected an array at [" +
                          p.table + "] " + p.key + ", found " + io::describe(*n));
@@ -77,13 +96,20 @@ void set_keys(const SweepFile& s, toml::table& base, const std::vector<double>& 
       throw InputError(s.source + ": [[axes]] key '" + key + "': expected a numeric key, found " +
                        io::describe(*n));
     }
-    if (p.index) {
-      toml::array* a = t->get(p.key)->as_array();
-      a->replace(a->begin() + static_cast<std::ptrdiff_t>(*p.index), values[k]);
-    } else {
-      t->insert_or_assign(p.key, values[k]);
-    }
+    spans.emplace_back(byte_offset(s.base_text, n->source().begin),
+                       byte_offset(s.base_text, n->source().end));
+    texts.push_back(format_number(values[k]));
   }
+  // From the last value to the first, so that the earlier offsets stay valid.
+  std::vector<std::size_t> order(spans.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return spans[a].first > spans[b].first; });
+  std::string text = s.base_text;
+  for (const std::size_t i : order) {
+    text.replace(spans[i].first, spans[i].second - spans[i].first, texts[i]);
+  }
+  return text;
 }
 
 std::string point_label(const SweepFile& s, std::size_t index) {
@@ -164,20 +190,17 @@ std::vector<std::string> quantity_columns(const SweepFile& s) {
 
 io::Scenario point_scenario(const SweepFile& s, std::size_t index, StabilityOptions* options) {
   const std::vector<double> values = point_values(s, index);
-  toml::table base = io::parse_toml(s.base_text, s.base_source);
-  set_keys(s, base, values);
+  const std::string text = set_keys(s, values);
   if (options) {
     *options = s.stability;
     for (std::size_t k = 0; k < s.axes.size(); ++k) {
       if (s.axes[k].key == "stability.omega") options->omega = values[k];
     }
   }
-  std::ostringstream text;
-  text << base;
   try {
-    return io::parse_scenario(text.str(), s.base_source);
+    return io::parse_scenario(text, s.base_source);
   } catch (const InputError& e) {
-    // The line and column are those of the point's rewritten text, not of the base file: drop them.
+    // The column may have moved where a value was rewritten on the line: name the file alone.
     std::string what = e.what();
     const std::string prefix = s.base_source + ":";
     if (what.rfind(prefix, 0) == 0) {
