@@ -33,16 +33,10 @@ CliResult run(const std::string& args) {
 
 std::string example(const char* name) { return newtop::test::example_path(name); }
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("newtop_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
-}
+fs::path scratch(const std::string& name) { return newtop::test::scratch_path("newtop_cli", name); }
 
 fs::path write_file(const std::string& name, const std::string& text) {
-  const fs::path p = scratch(name);
-  std::ofstream(p) << text;
-  return p;
+  return newtop::test::write_text(scratch(name), text);
 }
 
 TEST(Cli, SimulateJsonContract) {

@@ -45,6 +45,30 @@ inline CliResult run_newtop(const std::string& args, Stderr stderr_mode = Stderr
   return r;
 }
 
+/// `name` in a scratch folder of this test process's own (`folder_PID` in the temporary
+/// directory, created on first use).
+inline std::filesystem::path scratch_path(const std::string& folder, const std::string& name) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / (folder + "_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  return dir / name;
+}
+
+/// Writes `text` to `path` and returns the path.
+inline std::filesystem::path write_text(const std::filesystem::path& path,
+                                        const std::string& text) {
+  std::ofstream(path) << text;
+  return path;
+}
+
+/// The whole content of a file ("" if it cannot be read).
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
 /// Path of a bundled example scenario.
 inline std::string example_path(const std::string& name) {
   return std::string(NEWTOP_SOURCE_DIR) + "/examples/" + name;

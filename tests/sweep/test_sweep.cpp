@@ -7,10 +7,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <random>
-#include <sstream>
 #include <string>
 
 #include "newtop/sweep/sweep.hpp"
@@ -22,23 +20,14 @@ namespace fs = std::filesystem;
 using newtop::sweep::SweepFile;
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("newtop_sweep_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
+  return newtop::test::scratch_path("newtop_sweep", name);
 }
 
 fs::path write_file(const std::string& name, const std::string& text) {
-  const fs::path p = scratch(name);
-  std::ofstream(p) << text;
-  return p;
+  return newtop::test::write_text(scratch(name), text);
 }
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string read(const fs::path& p) { return newtop::test::read_text(p); }
 
 std::string example(const char* name) { return newtop::test::example_path(name); }
 

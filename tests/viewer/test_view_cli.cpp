@@ -5,8 +5,6 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "page.hpp"
@@ -22,23 +20,14 @@ CliResult run(const std::string& args) {
 }
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("newtop_view_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
+  return newtop::test::scratch_path("newtop_view", name);
 }
 
 fs::path write_file(const std::string& name, const std::string& text) {
-  const fs::path p = scratch(name);
-  std::ofstream(p) << text;
-  return p;
+  return newtop::test::write_text(scratch(name), text);
 }
 
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string read_file(const fs::path& p) { return newtop::test::read_text(p); }
 
 const char* kHeader = "t,p,q,r,gamma1,gamma2,gamma3,energy,area,geometric\n";
 
