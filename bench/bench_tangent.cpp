@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "newtop/newtop.hpp"
-#include "newtop/phase/chaos.hpp"
+#include "newtop/phase/chaos_run.hpp"
 
 namespace {
 

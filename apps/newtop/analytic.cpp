@@ -18,7 +18,7 @@
 
 #include "command.hpp"
 #include "newtop/analysis/brun_level.hpp"
-#include "newtop/integrate/methods.hpp"
+#include "newtop/integrate/run.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
 #include "summary.hpp"
@@ -198,7 +198,7 @@ Comparison compare(const io::Scenario& sc, const AnalyticSolution& sol,
   MethodSettings ref{"rkf78", 0.0, kReferenceTol, kReferenceTol, std::nullopt};
   IntegrateOptions opt;
   if (sc.integrate.max_steps) opt.max_steps = *sc.integrate.max_steps;
-  c.reference = run_method_sampled(ref, sc.model.quadratic(), sc.initial, 0.0, times.back(),
+  c.reference = run_method_sampled(ref, sc.model, sc.initial, 0.0, times.back(),
                                    OutputTimes::list(times, 0.0, times.back()), opt,
                                    [&](std::int64_t k, double, const State& x) { numeric[k] = x; });
   for (std::size_t k = 0; k < times.size(); ++k) {

@@ -58,10 +58,8 @@ int run(const ChaosArgs& a) {
   const InterruptGuard guard;
   phase::ChaosResult r;
   try {
-    r = visit_model(sc.model, [&](const auto& model) {
-      return phase::chaos_run(run.method, model, sc.initial, run.t0, run.t_end, run.options,
-                              a.spectrum, history, every, throw_if_interrupted);
-    });
+    r = phase::chaos_run(run.method, sc.model, sc.initial, run.t0, run.t_end, run.options,
+                         a.spectrum, history, every, throw_if_interrupted);
   } catch (const Interrupted& e) {
     std::cerr << "newtop: interrupted by " << signal_name(e.signal)
               << " at t = " << format_number(e.t)

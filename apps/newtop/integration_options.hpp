@@ -6,7 +6,8 @@
 #include <optional>
 #include <string>
 
-#include "newtop/integrate/methods.hpp"
+#include "newtop/integrate/method_settings.hpp"
+#include "newtop/integrate/options.hpp"
 #include "newtop/io/scenario.hpp"
 
 namespace newtop::app {

@@ -96,20 +96,18 @@ int run(const SectionArgs& a) {
   Status status = Status::finished;
   double residual = 0.0, relative = 0.0;
   try {
-    visit_model(sc.model, [&](const auto& model) {
-      const phase::SurfaceFunction g(surface, model.body);
-      for (std::size_t k = 0; k < starts.size(); ++k) {
-        phase::IntegralsDrift orbit_drift;  // each orbit against its own start
-        const phase::SectionRun r = phase::section_orbit(
-            run.method, model, g, settings, static_cast<int>(k), starts[k], run.t0, run.t_end,
-            run.options, crossings, orbit_drift, throw_if_interrupted);
-        drift.merge(orbit_drift);
-        all_by_crossings = all_by_crossings && r.by_crossings;
-        if (r.outcome.status != Status::finished) status = r.outcome.status;
-        residual = std::max(residual, r.max_residual);
-        relative = std::max(relative, r.max_relative);
-      }
-    });
+    const phase::SurfaceFunction g(surface, sc.model.body());
+    for (std::size_t k = 0; k < starts.size(); ++k) {
+      phase::IntegralsDrift orbit_drift;  // each orbit against its own start
+      const phase::SectionRun r = phase::section_orbit(
+          run.method, sc.model, g, settings, static_cast<int>(k), starts[k], run.t0, run.t_end,
+          run.options, crossings, orbit_drift, throw_if_interrupted);
+      drift.merge(orbit_drift);
+      all_by_crossings = all_by_crossings && r.by_crossings;
+      if (r.outcome.status != Status::finished) status = r.outcome.status;
+      residual = std::max(residual, r.max_residual);
+      relative = std::max(relative, r.max_relative);
+    }
   } catch (const Interrupted& e) {
     std::cerr << "newtop: interrupted by " << signal_name(e.signal)
               << " at t = " << format_number(e.t)

@@ -10,7 +10,7 @@
 #include "integration_options.hpp"
 #include "interrupt.hpp"
 #include "newtop/exact/multipole.hpp"
-#include "newtop/integrate/methods.hpp"
+#include "newtop/integrate/run.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
@@ -42,9 +42,8 @@ struct RunPlan {
 
 /// Tracks max |I(t) − I(0)| of every integral that holds, and the largest |m| (the scale of the
 /// area integral's drift).
-template <class M>
 struct DriftTracker {
-  DriftTracker(const M& m, const State& x0) : model(m), initial(integrals(m, x0)) {
+  DriftTracker(const Model& m, const State& x0) : model(m), initial(integrals(m, x0)) {
     max_drift = initial;
     max_drift.energy = max_drift.area = max_drift.geometric = 0.0;
     if (max_drift.brun) max_drift.brun = 0.0;
@@ -60,7 +59,7 @@ struct DriftTracker {
     if (v.lagrange) upd(*max_drift.lagrange, *v.lagrange, *initial.lagrange);
     max_m = std::max(max_m, s.m.norm());
   }
-  const M& model;
+  const Model& model;
   IntegralValues initial, max_drift;
   double max_m = 0;
 };
@@ -104,8 +103,8 @@ RunPlan make_plan(const SimulateArgs& a, const io::Scenario& sc) {
 
 /// Runs the plan from x0 (a State, or an OrientedState with the attitude), writing the CSV rows;
 /// every step is checked for a pending SIGINT/SIGTERM.
-template <class M, class X>
-Outcome run_plan(const RunPlan& p, const M& model, const X& x0, DriftTracker<M>& drift,
+template <class X>
+Outcome run_plan(const RunPlan& p, const Model& model, const X& x0, DriftTracker& drift,
                  io::CsvTrajectory* csv) {
   std::int64_t count = 0;
   double last_written = std::nan("");
@@ -174,8 +173,8 @@ void print_report(const SimulateArgs& a, const io::Scenario& sc, SimulationRepor
             << "   |omega - omega_q| = " << format_number(dw.norm()) << "\n";
 }
 
-template <class M>
-int run_in(const SimulateArgs& a, const io::Scenario& sc, const M& model) {
+int run_in(const SimulateArgs& a, const io::Scenario& sc) {
+  const Model& model = sc.model;
   const RunPlan plan = make_plan(a, sc);
   if (a.euler && !sc.attitude) {
     throw InputError(
@@ -192,7 +191,7 @@ int run_in(const SimulateArgs& a, const io::Scenario& sc, const M& model) {
         file->stream(), sc.model,
         io::AttitudeColumns{sc.attitude.has_value(), a.euler.value_or(0)});
   }
-  DriftTracker<M> drift(model, sc.initial);
+  DriftTracker drift(model, sc.initial);
   const Outcome out =
       sc.attitude ? run_plan(plan, model, with_attitude(sc.initial, *sc.attitude), drift, csv.get())
                   : run_plan(plan, model, sc.initial, drift, csv.get());
@@ -222,7 +221,7 @@ int run(const SimulateArgs& a) {
   const io::Scenario sc = io::load_scenario(a.scenario);
   const InterruptGuard guard;
   try {
-    return visit_model(sc.model, [&](const auto& model) { return run_in(a, sc, model); });
+    return run_in(a, sc);
   } catch (const Interrupted& e) {
     std::cerr << "newtop: interrupted by " << signal_name(e.signal)
               << " at t = " << format_number(e.t)

@@ -5,7 +5,7 @@
 #include <ostream>
 #include <string>
 
-#include "newtop/integrate/methods.hpp"
+#include "newtop/integrate/run.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
 

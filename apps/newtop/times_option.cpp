@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "newtop/core/types.hpp"
+
 namespace newtop::app {
 
 std::vector<double> parse_times(const std::string& option, const std::string& text) {

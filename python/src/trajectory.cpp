@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "newtop/integrate/methods.hpp"
+#include "newtop/integrate/run.hpp"
 #include "newtop/io/scenario.hpp"
 #include "newtop/model/integrals.hpp"
 
@@ -80,10 +80,8 @@ py::dict run(const Model& model, const State& x0, double t0, double t1,
   Outcome out;
   {
     const py::gil_scoped_release unlocked;
-    out = visit_model(model, [&](const auto& m) {
-      return run_method(method, m, x0, t0, t1, options,
-                        [&](double t, const State& s) { rows.add(t, s); });
-    });
+    out = run_method(method, model, x0, t0, t1, options,
+                     [&](double t, const State& s) { rows.add(t, s); });
   }
   py::dict d = columns(std::move(rows));
   d["outcome"] = std::string(to_string(out.status));

@@ -1,7 +1,9 @@
-#include "newtop/integrate/methods.hpp"
-
 #include <cmath>
 #include <vector>
+
+#include "newtop/core/types.hpp"
+#include "newtop/integrate/composition_tables.hpp"
+#include "newtop/integrate/method_settings.hpp"
 
 namespace newtop {
 namespace {

@@ -12,7 +12,7 @@
 #include "newtop/analysis/equilibria.hpp"
 #include "newtop/analysis/stability.hpp"
 #include "newtop/analysis/stability_spin.hpp"
-#include "newtop/integrate/methods.hpp"
+#include "newtop/integrate/run.hpp"
 #include "newtop/model/integrals.hpp"
 #include "newtop/phase/chaos.hpp"
 
@@ -166,9 +166,7 @@ RunResult run(const SweepFile& s, const io::Scenario& sc) {
     r.drift_area = std::max(r.drift_area, std::abs(v.area - i0.area));
     r.drift_geometric = std::max(r.drift_geometric, std::abs(v.geometric - i0.geometric));
   };
-  r.outcome = visit_model(sc.model, [&](const auto& m) {
-    return run_method(method, m, sc.initial, sc.integrate.t0, t1, options, observe);
-  });
+  r.outcome = run_method(method, sc.model, sc.initial, sc.integrate.t0, t1, options, observe);
   return r;
 }
 
@@ -249,9 +247,7 @@ PointResult evaluate_point(const SweepFile& s, std::size_t index) {
     const double t1 = io::resolve_t_end(sc, s.integrate);
     IntegrateOptions options;
     if (sc.integrate.max_steps) options.max_steps = *sc.integrate.max_steps;
-    chaos = visit_model(sc.model, [&](const auto& m) {
-      return phase::chaos_run(method, m, sc.initial, sc.integrate.t0, t1, options, false);
-    });
+    chaos = phase::chaos_run(method, sc.model, sc.initial, sc.integrate.t0, t1, options, false);
     if (chaos->outcome.status != Status::finished) {
       return {std::string(to_string(chaos->outcome.status)), {}};
     }

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "newtop/phase/chaos.hpp"
+#include "newtop/phase/chaos_run.hpp"
 #include "support/problems.hpp"
 
 namespace newtop {

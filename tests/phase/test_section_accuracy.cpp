@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "newtop/model/model.hpp"
-#include "newtop/phase/section.hpp"
+#include "newtop/phase/section_run.hpp"
 #include "support/problems.hpp"
 
 namespace newtop {

@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "newtop/model/model.hpp"
-#include "newtop/phase/chaos.hpp"
+#include "newtop/phase/chaos_run.hpp"
 #include "newtop/phase/one_step.hpp"
 #include "support/problems.hpp"
 

@@ -9,8 +9,8 @@
 
 #include "newtop/integrate/driver.hpp"
 #include "newtop/integrate/method_settings.hpp"
-#include "newtop/integrate/output_times.hpp"
 #include "newtop/integrate/runge_kutta.hpp"
+#include "newtop/integrate/sampled.hpp"
 #include "newtop/integrate/splitting.hpp"
 
 namespace newtop {

@@ -11,7 +11,8 @@
 #include <vector>
 
 #include "newtop/integrate/composition_tables.hpp"
-#include "newtop/integrate/methods.hpp"
+#include "newtop/integrate/method_settings.hpp"
+#include "newtop/integrate/options.hpp"
 #include "newtop/integrate/outcome.hpp"
 #include "newtop/orbit/orbit_model.hpp"
 

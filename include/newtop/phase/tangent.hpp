@@ -17,11 +17,9 @@
 #include <vector>
 
 #include "newtop/integrate/methods.hpp"
+#include "newtop/phase/tangent_vectors.hpp"
 
 namespace newtop::phase {
-
-/// Tangent vectors as columns (at most 6, fixed storage).
-using Tangent = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6>;
 
 /// A fixed-step tangent stepper: step(model, x, V, h) advances x and its tangent vectors V by h.
 template <class S, class M>
@@ -117,9 +115,5 @@ class TangentRk4Stepper {
     V += (h / 6) * (l1 + 2 * l2 + 2 * l3 + l4);
   }
 };
-
-/// Throws InputError unless the settings name a method with a tangent map (validate()'s checks
-/// too): a splitting method needs the axes split of the free body.
-void check_tangent_method(const MethodSettings& settings);
 
 }  // namespace newtop::phase

@@ -1,0 +1,19 @@
+#pragma once
+/// \file
+/// Tangent vectors δx = (δm, δγ) ∈ R⁶ of a state, as the columns of a matrix (tangent.hpp), and
+/// which methods have a tangent map.
+
+#include <Eigen/Core>
+
+#include "newtop/integrate/method_settings.hpp"
+
+namespace newtop::phase {
+
+/// Tangent vectors as columns (at most 6, fixed storage).
+using Tangent = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6>;
+
+/// Throws InputError unless the settings name a method with a tangent map (validate()'s checks
+/// too): a splitting method needs the axes split of the free body.
+void check_tangent_method(const MethodSettings& settings);
+
+}  // namespace newtop::phase
