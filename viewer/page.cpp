@@ -12,7 +12,7 @@
 #include <variant>
 
 #include "assets.hpp"
-#include "newtop/io/output.hpp"
+#include "newtop/io/json.hpp"
 
 namespace newtop::viewer {
 namespace {

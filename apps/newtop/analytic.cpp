@@ -19,6 +19,7 @@
 #include "command.hpp"
 #include "newtop/analysis/brun_level.hpp"
 #include "newtop/integrate/run.hpp"
+#include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
 #include "summary.hpp"

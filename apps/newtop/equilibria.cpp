@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "command.hpp"
+#include "newtop/io/json.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"

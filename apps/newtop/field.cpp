@@ -9,6 +9,7 @@
 
 #include "command.hpp"
 #include "newtop/exact/multipole.hpp"
+#include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
 #include "summary.hpp"

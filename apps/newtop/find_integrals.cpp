@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "command.hpp"
+#include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/potential_file.hpp"
 #include "newtop/io/scenario.hpp"

@@ -11,6 +11,7 @@
 
 #include "command.hpp"
 #include "interrupt.hpp"
+#include "newtop/io/json.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/orbit/spin_orbit.hpp"

@@ -6,6 +6,7 @@
 #include <memory>
 #include <sstream>
 
+#include "newtop/io/json.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/orbit/debra_delp.hpp"

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 
+#include "newtop/io/json.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/orbit/orbit_integrate.hpp"

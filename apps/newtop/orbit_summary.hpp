@@ -5,6 +5,7 @@
 #include <ostream>
 #include <string>
 
+#include "newtop/io/json.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/orbit/orbit_integrate.hpp"

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "command.hpp"
+#include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
 #include "summary.hpp"

@@ -9,6 +9,7 @@
 #include "command.hpp"
 #include "integration_options.hpp"
 #include "interrupt.hpp"
+#include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
 #include "summary.hpp"
 

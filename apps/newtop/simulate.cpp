@@ -11,6 +11,7 @@
 #include "interrupt.hpp"
 #include "newtop/exact/multipole.hpp"
 #include "newtop/integrate/run.hpp"
+#include "newtop/io/json.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"

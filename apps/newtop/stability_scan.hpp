@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/model/model.hpp"
 

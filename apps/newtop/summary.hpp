@@ -6,6 +6,7 @@
 #include <string>
 
 #include "newtop/integrate/run.hpp"
+#include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
 

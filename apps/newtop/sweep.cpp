@@ -14,6 +14,7 @@
 
 #include "command.hpp"
 #include "interrupt.hpp"
+#include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
 #include "summary.hpp"
 #include "sweep_hdf5.hpp"

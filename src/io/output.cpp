@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "newtop/io/json.hpp"
+
 namespace newtop::io {
 
 namespace {

@@ -14,6 +14,7 @@
 #include "newtop/analysis/equilibria.hpp"
 #include "newtop/analysis/rotations.hpp"
 #include "newtop/analysis/stability_spin.hpp"
+#include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
 

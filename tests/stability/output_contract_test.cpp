@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
 #include "support/cli.hpp"
 

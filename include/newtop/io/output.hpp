@@ -1,9 +1,8 @@
 #pragma once
 /// \file
-/// Output writers: files that appear whole or not at all, CSV trajectories, JSON fragments.
+/// Output writers: files that appear whole or not at all, CSV trajectories (JSON: json.hpp).
 
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <span>
 #include <string>
 #include <vector>
@@ -12,8 +11,6 @@
 #include "newtop/model/integrals.hpp"
 
 namespace newtop::io {
-
-using Json = nlohmann::ordered_json;
 
 /// A file written under a temporary name beside its destination and renamed over it by commit();
 /// destroyed without commit() it removes the temporary, so no half-written file is ever left.
@@ -75,9 +72,5 @@ class CsvTrajectory {
   AttitudeColumns attitude_;
   std::string line_;
 };
-
-/// {"energy": …, "area": …, "geometric": …[, "brun": …][, "lagrange": …]}
-Json to_json(const IntegralValues& v);
-Json to_json(const Vec3& v);
 
 }  // namespace newtop::io
