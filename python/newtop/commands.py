@@ -126,7 +126,8 @@ def simulate(scenario, **options):
     Adds ``trajectory``: the dict of ``newtop.integrate`` for the same scenario and options (t,
     omega, gamma, m and the integrals at every accepted step, numpy views of one buffer), and the
     same arrays at the top level: ``t`` (N), ``omega``, ``gamma``, ``m`` (N x 3), ``energy``,
-    ``area``, ``geometric`` (and ``brun``, ``lagrange`` where they hold) (N). The
+    ``area``, ``geometric`` (and ``brun``, ``lagrange`` where they hold) (N), and with an
+    attitude in the scenario ``quaternion`` (N x 4, body to inertial, scalar first). The
     options ``t_end``, ``method``, ``step`` and ``tol`` apply to both; ``out``, ``every``,
     ``dt_out`` and ``times`` only to the CSV file the command writes.
     """
@@ -139,7 +140,7 @@ def simulate(scenario, **options):
         result["trajectory"] = trajectory
         # the trajectory's arrays also at the top level (views of the same buffer)
         for name in ("t", "omega", "gamma", "m", "energy", "area", "geometric", "brun",
-                     "lagrange"):
+                     "lagrange", "quaternion"):
             if name in trajectory:
                 result[name] = trajectory[name]
     return result

@@ -140,6 +140,14 @@ void bind_scenario(py::module_& m) {
       .def_readonly("source", &io::Scenario::source, "the file it was read from")
       .def_readonly("model", &io::Scenario::model)
       .def_readonly("initial", &io::Scenario::initial)
+      .def_property_readonly(
+          "attitude",
+          [](const io::Scenario& s) -> std::optional<Eigen::Vector4d> {
+            if (!s.attitude) return std::nullopt;
+            return Eigen::Vector4d(s.attitude->w(), s.attitude->x(), s.attitude->y(),
+                                   s.attitude->z());
+          },
+          "the initial attitude [w, x, y, z] (body -> inertial, scalar first), or None")
       .def_property_readonly("t0", [](const io::Scenario& s) { return s.integrate.t0; })
       .def_property_readonly("t_end", [](const io::Scenario& s) { return s.integrate.t_end; })
       .def_property_readonly("method", [](const io::Scenario& s) { return s.integrate.method; })

@@ -1,10 +1,11 @@
 // integrate(): one run of any method into numpy arrays. The samples go into one growing buffer of
-// rows (t, omega, gamma, m, integrals) that the returned arrays view without a copy.
+// rows (t, omega, gamma, m, integrals[, quaternion]) that the returned arrays view without a copy.
 
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,13 +21,21 @@ namespace py = pybind11;
 namespace newtop::python {
 namespace {
 
-/// Row layout: t, omega (3), gamma (3), m (3), energy, area, geometric[, brun][, lagrange].
+/// Row layout: t, omega (3), gamma (3), m (3), energy, area, geometric[, brun][, lagrange], then
+/// with an attitude the quaternion q0..q3 (body → inertial, scalar first).
 struct Rows {
-  explicit Rows(const Model& model) : model_(model) {
+  Rows(const Model& model, bool with_q) : attitude(with_q), model_(model) {
     const IntegralValues v = integrals(model, State{});
     if (v.brun) names.push_back("brun");
     if (v.lagrange) names.push_back("lagrange");
-    width = 10 + static_cast<py::ssize_t>(names.size());
+    width = 10 + static_cast<py::ssize_t>(names.size()) + (with_q ? 4 : 0);
+  }
+  void add(double t, const OrientedState& s) {
+    add(t, static_cast<const State&>(s));
+    data.push_back(s.q.w());
+    data.push_back(s.q.x());
+    data.push_back(s.q.y());
+    data.push_back(s.q.z());
   }
   void add(double t, const State& s) {
     const Vec3 w = omega(model_.body(), s);
@@ -42,6 +51,7 @@ struct Rows {
     if (v.lagrange) data.push_back(*v.lagrange);
   }
   std::vector<std::string> names{"energy", "area", "geometric"};
+  bool attitude = false;
   py::ssize_t width = 0;
   std::vector<double> data;
 
@@ -70,18 +80,24 @@ py::dict columns(Rows&& rows) {
   for (std::size_t i = 0; i < rows.names.size(); ++i) {
     d[py::str(rows.names[i])] = view(10 + static_cast<py::ssize_t>(i), 1);
   }
+  if (rows.attitude) d["quaternion"] = view(10 + static_cast<py::ssize_t>(rows.names.size()), 4);
   d["table"] = table;
   return d;
 }
 
-py::dict run(const Model& model, const State& x0, double t0, double t1,
-             const MethodSettings& method, IntegrateOptions options) {
-  Rows rows(model);
+py::dict run(const Model& model, const State& x0, const std::optional<Quaternion>& q0, double t0,
+             double t1, const MethodSettings& method, IntegrateOptions options) {
+  Rows rows(model, q0.has_value());
   Outcome out;
   {
     const py::gil_scoped_release unlocked;
-    out = run_method(method, model, x0, t0, t1, options,
-                     [&](double t, const State& s) { rows.add(t, s); });
+    if (q0) {
+      out = run_method(method, model, with_attitude(x0, *q0), t0, t1, options,
+                       [&](double t, const OrientedState& s) { rows.add(t, s); });
+    } else {
+      out = run_method(method, model, x0, t0, t1, options,
+                       [&](double t, const State& s) { rows.add(t, s); });
+    }
   }
   py::dict d = columns(std::move(rows));
   d["outcome"] = std::string(to_string(out.status));
@@ -90,6 +106,17 @@ py::dict run(const Model& model, const State& x0, double t0, double t1,
   d["method"] = method.name;
   d["step"] = method.step;
   return d;
+}
+
+/// A quaternion [w, x, y, z] given to integrate(): finite and of unit norm within
+/// kUnitQuaternionTolerance (then normalised), as the scenario's [initial] quaternion.
+Quaternion unit_quaternion(const Eigen::Vector4d& v) {
+  const double n = v.norm();
+  if (!v.allFinite() || !(std::abs(n - 1.0) <= kUnitQuaternionTolerance)) {
+    throw InputError("quaternion: expected a finite unit quaternion [w, x, y, z] (norm 1 within " +
+                     format_number(kUnitQuaternionTolerance) + "), found norm " + format_number(n));
+  }
+  return Quaternion(v[0] / n, v[1] / n, v[2] / n, v[3] / n);
 }
 
 /// The method as the command line resolves it: a name, or the default for a step or a tolerance.
@@ -112,19 +139,24 @@ void bind_trajectory(py::module_& m) {
       "integrate",
       [](const Model& model, const State& state, double t_end, double t0,
          const std::optional<std::string>& method, std::optional<double> step,
-         std::optional<double> tol, std::optional<std::int64_t> max_steps) {
+         std::optional<double> tol, std::optional<std::int64_t> max_steps,
+         const std::optional<Eigen::Vector4d>& quaternion) {
         IntegrateOptions o;
         if (max_steps) o.max_steps = *max_steps;
-        return run(model, state, t0, t_end, settings(method, step, tol), o);
+        std::optional<Quaternion> q;
+        if (quaternion) q = unit_quaternion(*quaternion);
+        return run(model, state, q, t0, t_end, settings(method, step, tol), o);
       },
       py::arg("model"), py::arg("state"), py::arg("t_end"), py::kw_only(), py::arg("t0") = 0.0,
       py::arg("method") = py::none(), py::arg("step") = py::none(), py::arg("tol") = py::none(),
-      py::arg("max_steps") = py::none(),
+      py::arg("max_steps") = py::none(), py::arg("quaternion") = py::none(),
       "Integrates the Euler-Poisson equations (spec section 4) from (t0, state) to t_end with a "
       "method by name (splitting2..8, rk4, dopri5, rkf78); a step selects splitting6 by default "
       "and a tolerance rkf78. Returns a dict of numpy arrays over the accepted steps: t (N), "
       "omega, gamma, m (N x 3), energy, area, geometric[, brun][, lagrange] (N), all views of "
-      "one (N x W) array 'table'; and 'outcome', 'steps', 'rejected', 'method', 'step'.");
+      "one (N x W) array 'table'; and 'outcome', 'steps', 'rejected', 'method', 'step'. With "
+      "quaternion=[w, x, y, z] (the attitude, body -> inertial, scalar first; a unit one within "
+      "1e-6, normalised) the run carries the attitude and adds 'quaternion' (N x 4).");
   m.def(
       "integrate",
       [](const io::Scenario& sc, std::optional<double> t_end,
@@ -135,12 +167,14 @@ void bind_trajectory(py::module_& m) {
         if (sc.integrate.max_steps) o.max_steps = *sc.integrate.max_steps;
         const double t1 = io::resolve_t_end(sc, ov);
         check_time_span(sc.integrate.t0, t1);
-        return run(sc.model, sc.initial, sc.integrate.t0, t1, io::resolve_method(sc, ov), o);
+        return run(sc.model, sc.initial, sc.attitude, sc.integrate.t0, t1,
+                   io::resolve_method(sc, ov), o);
       },
       py::arg("scenario"), py::kw_only(), py::arg("t_end") = py::none(),
       py::arg("method") = py::none(), py::arg("step") = py::none(), py::arg("tol") = py::none(),
       "Integrates a scenario with its [integrate] settings, overridden as on the command line "
-      "(newtop simulate --t-end, --method, --step, --tol). Same result as the other form.");
+      "(newtop simulate --t-end, --method, --step, --tol). Same result as the other form; a "
+      "scenario with an attitude adds 'quaternion' (N x 4), as simulate's q0..q3 columns.");
 }
 
 }  // namespace newtop::python

@@ -256,3 +256,25 @@ def test_section_and_chaos_give_the_programs_json():
     same(c, program_json("chaos", brun, "--t-end", "100"))
     with pytest.raises(ValueError, match="surface"):
         newtop.section(brun, surface="gamma4 = 0")
+
+
+def test_simulate_with_an_attitude_gives_the_programs_quaternion_columns(tmp_path):
+    csv = tmp_path / "run.csv"
+    scenario = example("attitude_heavy_top.toml")
+    result = newtop.simulate(scenario, t_end=2.0, out=str(csv))
+    header = csv.read_text().splitlines()[0].split(",")
+    table = np.loadtxt(csv, delimiter=",", skiprows=1)
+    q = result["quaternion"]
+    assert q.shape == (table.shape[0], 4)
+    assert q is result["trajectory"]["quaternion"]
+    assert np.array_equal(q, table[:, [header.index("q%d" % i) for i in range(4)]])
+    assert np.array_equal(q[-1], result["final"]["quaternion"])
+    sc = newtop.load_scenario(scenario)
+    assert np.array_equal(q[0], sc.attitude)
+    # the same run from a model, a state and the quaternion
+    direct = newtop.integrate(sc.model, sc.initial, 2.0, step=sc.step, method=sc.method,
+                              quaternion=sc.attitude)
+    assert np.array_equal(direct["quaternion"], q)
+    assert "quaternion" not in newtop.integrate(sc.model, sc.initial, 2.0, step=0.01)
+    with pytest.raises(ValueError, match="quaternion: expected a finite unit quaternion"):
+        newtop.integrate(sc.model, sc.initial, 1.0, step=0.01, quaternion=[1.0, 0.1, 0, 0])
