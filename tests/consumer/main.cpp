@@ -32,6 +32,19 @@ bool integrate_heavy_top() {
   return out.status == Status::finished && drift < 1e-6;
 }
 
+/// newtop::newtop: the run compiled in the library (run.hpp, any Model) takes the same steps as
+/// the template on the model's field.
+bool compiled_run() {
+  const QuadraticModel q{Body::from_principal(Vec3(1, 2, 3), 1.0, Vec3(0, 0.1, 0.2)),
+                         QuadraticField::from_mu_R(1.0, 2.0)};
+  const State x0 = state_from_omega(q.body, Vec3(0.3, 0.4, 1.1), Vec3(0, 0.6, 0.8));
+  const MethodSettings rkf78{"rkf78", 0.0, 1e-10, 1e-10, std::nullopt};
+  const Outcome compiled = run_method(rkf78, Model(q), x0, 0.0, 5.0);
+  const Outcome direct = run_method(rkf78, q, x0, 0.0, 5.0);
+  return compiled.status == Status::finished && compiled.steps == direct.steps &&
+         compiled.state.m == direct.state.m && compiled.state.gamma == direct.state.gamma;
+}
+
 /// newtop::newtop (Boost.Math elliptic functions): the Euler–Poinsot solution keeps |m| and the
 /// energy of the free body and moves m.
 bool euler_poinsot_solution() {
@@ -72,6 +85,7 @@ bool tetrahedron_from_obj() {
 
 int main() {
   bool ok = check(integrate_heavy_top(), "newtop::newtop: heavy top, energy conserved");
+  ok = check(compiled_run(), "newtop::newtop: compiled run equals the template") && ok;
   ok = check(euler_poinsot_solution(), "newtop::newtop: Euler-Poinsot solution") && ok;
   ok = check(parse_scenario_text(), "newtop::io: scenario from TOML text") && ok;
   ok = check(vector_json(), "newtop::io: JSON") && ok;
