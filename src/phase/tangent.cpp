@@ -53,6 +53,16 @@ TangentSplittingStepper::TangentSplittingStepper(const CompositionTable& table,
   }
 }
 
+TangentSplittingStepper::TangentSplittingStepper(const SplittingStepper& stepper)
+    : order_(stepper.order()), ordering_(stepper.ordering()), c_(stepper.coefficients()) {
+  if (ordering_.free_body != FreeBodySplit::axes) {
+    throw InputError(
+        "ordering: expected the axes split of the free body for the tangent map, "
+        "found the " +
+        std::string(ordering_.free_body == FreeBodySplit::spin ? "spin" : "exact") + " split");
+  }
+}
+
 void TangentSplittingStepper::free_body(const Body& body, double t, State& x, Tangent& V) const {
   const double t2 = 0.5 * t;
   axis_flow_tangent(body, axes_[0], t2, x, V);

@@ -339,9 +339,14 @@ class EmbeddedRkStepper {
 
  public:
   EmbeddedRkStepper(double abs_tol, double rel_tol)
-      : plain_(abs_tol, rel_tol), oriented_(abs_tol, rel_tol) {}
+      : abs_tol_(abs_tol),
+        rel_tol_(rel_tol),
+        plain_(abs_tol, rel_tol),
+        oriented_(abs_tol, rel_tol) {}
 
   int order() const { return Order; }
+  double abs_tol() const { return abs_tol_; }
+  double rel_tol() const { return rel_tol_; }
 
   template <Field F, PhaseState X>
   double initial_step(const BasicModel<F>& model, const X& x, double t0, double t1) {
@@ -377,6 +382,7 @@ class EmbeddedRkStepper {
     }
   }
 
+  double abs_tol_, rel_tol_;
   Plain plain_;
   Oriented oriented_;
 };

@@ -268,6 +268,10 @@ class SplittingStepper {
   int order() const { return order_; }
   /// The most sub-flows (kicks, rotations, spins or exact free-body flows) one step applies.
   std::size_t stages() const;
+  /// The split of the free body and the working axes.
+  const SplitOrdering& ordering() const { return ordering_; }
+  /// The composition's coefficients in the order they are applied.
+  const SplittingCoefficients& coefficients() const { return coefficients_; }
 
   /// One step of x (m, γ, and the attitude when X = OrientedState).
   template <Field F, PhaseState X>

@@ -10,7 +10,7 @@
 
 #include "newtop/phase/chaos.hpp"
 #include "newtop/phase/one_step.hpp"
-#include "newtop/phase/tangent_adaptive.hpp"
+#include "newtop/phase/tangent_of.hpp"
 
 namespace newtop::phase {
 

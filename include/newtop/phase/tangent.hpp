@@ -66,6 +66,8 @@ void kick_tangent(const BasicModel<F>& model, double t, State& x, Tangent& V) {
 class TangentSplittingStepper {
  public:
   TangentSplittingStepper(const CompositionTable& table, const SplitOrdering& ordering);
+  /// The tangent map of a splitting stepper (the same coefficients and ordering).
+  explicit TangentSplittingStepper(const SplittingStepper& stepper);
   int order() const { return order_; }
   template <Field F>
   void step(const BasicModel<F>& model, State& x, Tangent& V, double h) {

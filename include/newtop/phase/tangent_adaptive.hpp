@@ -4,8 +4,7 @@
 /// the tangent vectors integrated together as one system of 6 + 36 equations, with odeint's error
 /// control over all of them (the indicators renormalise the vectors to norm 1 after every accepted
 /// step, so that the tolerance applies to O(1) numbers; the step sequence therefore differs from
-/// `simulate`'s, which controls the state alone). with_tangent_stepper() picks the tangent stepper
-/// of any method by name.
+/// `simulate`'s, which controls the state alone).
 
 #include <array>
 
@@ -80,26 +79,5 @@ using TangentDopri5Stepper =
 using TangentFehlberg78Stepper =
     TangentAdaptiveStepper<boost::numeric::odeint::runge_kutta_fehlberg78<TangentOdeState>,
                            boost::numeric::odeint::runge_kutta_fehlberg78<OdeState>, 8>;
-
-/// Calls fn(stepper) with the tangent stepper of the named method (check_tangent_method first).
-template <class Fn>
-decltype(auto) with_tangent_stepper(const MethodSettings& settings, Fn&& fn) {
-  check_tangent_method(settings);
-  if (method_info(settings.name).kind == MethodKind::splitting) {
-    const CompositionTable& table = composition_table(settings.name);
-    TangentSplittingStepper s(table, settings.ordering.value_or(default_ordering(table)));
-    return fn(s);
-  }
-  if (method_info(settings.name).kind == MethodKind::fixed_rk) {
-    TangentRk4Stepper s;
-    return fn(s);
-  }
-  if (settings.name == "dopri5") {
-    TangentDopri5Stepper s(settings.abs_tol, settings.rel_tol);
-    return fn(s);
-  }
-  TangentFehlberg78Stepper s(settings.abs_tol, settings.rel_tol);
-  return fn(s);
-}
 
 }  // namespace newtop::phase
