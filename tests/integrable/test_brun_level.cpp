@@ -117,6 +117,29 @@ TEST(BrunLevel, CoupledRelationsHoldWithTheCouplingK) {
   EXPECT_NEAR(brun_coupling(k, State{m, g}), 0.0, 64 * kEps);
 }
 
+TEST(BrunLevel, CouplingAndIntegralsInSeparatedCoordinates) {
+  // K, h and c from (u, w, S) alone (brun_coupling_at, brun_integrals_at) against K from the
+  // state and the integrals of the model: the level written in its sphero-conic coordinates.
+  std::mt19937_64 rng(16);
+  for (int trial = 0; trial < 200; ++trial) {
+    const RandomLevel L = random_level(rng);
+    const BrunCurve k = brun_level(L.model, L.x0);
+    const BrunPoint p = brun_point(k, L.x0);
+    const auto S = working_signs(k, L.x0);
+    // As in CoupledRelationsHoldWithTheCouplingK: terms of size |m|² (e3 − e1)² divided by
+    // |P(u_s)| and, for h and c, by u2 − u1.
+    double P = 1.0;
+    for (int s = 0; s < 2; ++s) P = std::min(P, std::abs(brun_P(k, p.u[s])));
+    const double scale = std::max(1.0, L.x0.m.squaredNorm()) * std::pow(k.e[2] - k.e[0], 2) / P;
+    const double tol = 1e3 * kEps * scale;
+    EXPECT_NEAR(brun_coupling_at(k, p, S), brun_coupling(k, L.x0), tol) << trial;
+    const BrunIntegrals I = brun_integrals_at(k, p, S);
+    const double spread = tol / (p.u[1] - p.u[0]);
+    EXPECT_NEAR(I.c, brun(L.model, L.x0), spread) << trial;
+    EXPECT_NEAR(I.h, energy(L.model, L.x0), spread / k.kappa) << trial;
+  }
+}
+
 TEST(BrunLevel, MomentaCarryTheMonopoleBracket) {
   std::mt19937_64 rng(13);
   int checked = 0;

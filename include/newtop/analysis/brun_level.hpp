@@ -42,6 +42,26 @@ double brun_coupling(const BrunCurve& k, const State& s);
 /// {p1, p2} = f (u2 − u1)/(4 V γ1 γ2 γ3) at a body-frame state (see above).
 double brun_momentum_bracket(const BrunCurve& k, const State& s);
 
+/// The coupling K of brun_coupling written in the separated coordinates of the level f = k.f:
+/// Σ_i e_i (m_i − f γ_i) γ_i = −V γ1 γ2 γ3 Σ_s w_s/((u_t − u_s) P(u_s)), so
+///   K = f² (u1 + u2 − e1 − e2 − e3) + 2f V γ1γ2γ3 (w1/P(u1) − w2/P(u2))/(u2 − u1),
+/// with V γ1γ2γ3 = S1S2S3 √(−P(u1) P(u2)). In Y_s = w_s/√P(u_s) and the points (u_s, √P(u_s))
+/// of the elliptic curve r² = P(u) the level is Y_s² + M(u_s) = K (s = 1, 2) with
+/// (u2 − u1)(K − f²(u1 + u2 − Σe)) = 2f S1S2S3 (r2 Y1 − r1 Y2) up to the branch of r (the symmetric
+/// form in which a change of variables mixing u and w must separate the level).
+double brun_coupling_at(const BrunCurve& k, const BrunPoint& p, const std::array<double, 3>& S);
+
+/// The integrals h and c as functions of the separated coordinates on the level f = k.f (the
+/// reduced system of the level: its Hamiltonian with the monopole bracket above). With
+/// q_s = w_s²/P(u_s) and K = brun_coupling_at,
+///   c − λ(e1 + e2 + e3) − f² = (q2 − q1)/(u1 − u2) − λ(u1 + u2),
+///   2κh = K + λ u1 u2 + (u2 q1 − u1 q2)/(u1 − u2).
+struct BrunIntegrals {
+  double h = 0, c = 0;
+};
+BrunIntegrals brun_integrals_at(const BrunCurve& k, const BrunPoint& p,
+                                const std::array<double, 3>& S);
+
 /// The Lax vector of the Clebsch system, X_i(u) = w_i m_i + √λ w_j w_k γ_i with w_i = √(u − e_i)
 /// (principal complex roots; √λ imaginary for λ < 0), working frame, (i, j, k) cyclic. For every
 /// u, Σ X_i² = N(u) + 2√λ f v with v = w1 w2 w3 (v² = P(u)): the quadratic form of the Lax
