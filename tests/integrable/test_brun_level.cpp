@@ -137,6 +137,16 @@ TEST(BrunLevel, CouplingAndIntegralsInSeparatedCoordinates) {
     const double spread = tol / (p.u[1] - p.u[0]);
     EXPECT_NEAR(I.c, brun(L.model, L.x0), spread) << trial;
     EXPECT_NEAR(I.h, energy(L.model, L.x0), spread / k.kappa) << trial;
+    // Routh's form: with t1 = w1/√P(u1), t2 = w2/√(−P(u2)) and ε = S1S2S3,
+    // 2κh = −[u2 (t1 − fε√(−P(u2))/u2)² + u1 (t2 − fε√P(u1)/u1)²]/(u2 − u1) + λu1u2
+    //       + f²κ²/(u1u2): the amended potential f²/(2γ·Iγ) (u1u2 = κ γ·Iγ) is of Stäckel form;
+    // only the gyroscopic shift of the momenta couples u1 and u2.
+    const double r1 = std::sqrt(brun_P(k, p.u[0])), r2 = std::sqrt(-brun_P(k, p.u[1]));
+    const double eps = S[0] * S[1] * S[2], f = k.f, u1 = p.u[0], u2 = p.u[1];
+    const double a1 = p.w[0] / r1 - f * eps * r2 / u2, a2 = p.w[1] / r2 - f * eps * r1 / u1;
+    const double routh = -(u2 * a1 * a1 + u1 * a2 * a2) / (u2 - u1) + k.lambda_ * u1 * u2 +
+                         f * f * k.kappa * k.kappa / (u1 * u2);
+    EXPECT_NEAR(routh, 2 * k.kappa * energy(L.model, L.x0), 2 * spread) << trial;
   }
 }
 
