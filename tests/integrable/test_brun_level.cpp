@@ -170,6 +170,20 @@ TEST(BrunLevel, MomentaCarryTheMonopoleBracket) {
     EXPECT_NEAR(bracket(u(0), p(0), L.x0), -1.0, kFiniteDifference * scale) << trial;
     EXPECT_NEAR(bracket(u(1), p(1), L.x0), -1.0, kFiniteDifference * scale) << trial;
     EXPECT_NEAR(bracket(u(0), p(1), L.x0), 0.0, kFiniteDifference * scale) << trial;
+    // The real momenta of Routh's form, t1 = w1/√P(u1), t2 = w2/√(−P(u2)):
+    // {t1, t2} = −4√(−P(u1)P(u2)) {p1, p2} = −εf(u2 − u1), ε = S1S2S3.
+    auto t = [&](int s) {
+      return [&k, s](const State& x) {
+        const BrunPoint q = brun_point(k, x);
+        return q.w[s] / std::sqrt(std::abs(brun_P(k, q.u[s])));
+      };
+    };
+    const BrunPoint q0 = brun_point(k, L.x0);
+    const auto S = working_signs(k, L.x0);
+    const double ft = -S[0] * S[1] * S[2] * k.f * (q0.u[1] - q0.u[0]);
+    EXPECT_NEAR(bracket(t(0), t(1), L.x0), ft,
+                kFiniteDifference * scale * std::max(1.0, std::abs(ft)))
+        << trial;
     const double expected = brun_momentum_bracket(k, L.x0);
     EXPECT_NEAR(bracket(p(0), p(1), L.x0), expected,
                 kFiniteDifference * scale * std::max(1.0, std::abs(expected)))
