@@ -39,6 +39,9 @@ constexpr double kSeparates = 1e-5;
 constexpr double kDoesNotSeparate = 1e-4;
 // Commutators of functions that commute: FD round-off, ≤ 5e-9 measured.
 constexpr double kCommutes = 1e-7;
+// A control whose functions depend on f² (off the level f = 0 they do not separate): the outer
+// difference picks up δ2² ∂²(f²) ∂ρ/∂(f²) ≈ 1e-5 (1.2e-5 measured).
+constexpr double kSeparatesToSecondOrder = 1e-4;
 
 Gradient gradient(const Function& F, const State& x, double step) {
   Gradient d;
@@ -211,6 +214,44 @@ Function lax_isotropic_zero(int k, const State& x0) {
   };
 }
 
+/// Candidate: the poles of the eigenvector ψ of the Lax vector (X × ψ = iξψ, ψ·ψ = 0) normalised
+/// by α(u) = (γ_i/w_i), the normalisation whose poles on f = 0 are the sphero-conic points (there
+/// α is isotropic and ⊥ X at u = u_s). ψ·α = 0 for one of the two eigenvectors where
+/// ξ² α·α = (X·α)², i.e. Σ_i γ_i²(u − e_j)(u − e_k) · Σ_i m_i²(u − e_i) = f² P(u): a cubic whose
+/// roots near u1, u2 deform them with the momenta. Root k is followed by continuity from x0.
+Function lax_dynamical_pole(int k, const State& x0) {
+  const auto roots = [](const State& x) {
+    const auto e = e_of();
+    double A[3] = {0, 0, 0}, B[2] = {0, 0};
+    for (int i = 0; i < 3; ++i) {
+      const double ej = e[(i + 1) % 3], ek = e[(i + 2) % 3], g2 = x.gamma[i] * x.gamma[i];
+      A[0] += g2;
+      A[1] -= g2 * (ej + ek);
+      A[2] += g2 * ej * ek;
+      B[0] += x.m[i] * x.m[i];
+      B[1] -= x.m[i] * x.m[i] * e[i];
+    }
+    const double f2 = std::pow(x.m.dot(x.gamma), 2);
+    const double s1 = e[0] + e[1] + e[2], s2 = e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
+    const double s3 = e[0] * e[1] * e[2];
+    const double c3 = A[0] * B[0] - f2, c2 = A[0] * B[1] + A[1] * B[0] + f2 * s1;
+    const double c1 = A[1] * B[1] + A[2] * B[0] - f2 * s2, c0 = A[2] * B[1] + f2 * s3;
+    Eigen::Matrix3d companion = Eigen::Matrix3d::Zero();
+    companion(1, 0) = companion(2, 1) = 1.0;
+    companion(0, 2) = -c0 / c3;
+    companion(1, 2) = -c1 / c3;
+    companion(2, 2) = -c2 / c3;
+    return Eigen::EigenSolver<Eigen::Matrix3d>(companion, false).eigenvalues().eval();
+  };
+  const Complex reference = roots(x0)[k];
+  return [roots, reference](const State& x) {
+    const Eigen::Vector3cd r = roots(x);
+    Eigen::Index best = 0;
+    (r.array() - reference).abs().minCoeff(&best);
+    return r[best];
+  };
+}
+
 TEST(BrunSeparability, SphereConicCoordinatesPassOnZeroLevelAndFailOnOthers) {
   // The control: the test accepts the known separation of f = 0 and rejects it on f ≠ 0, where
   // the monopole couples u1 and u2 (brun_level.hpp).
@@ -243,6 +284,36 @@ TEST(BrunSeparability, CommutingCandidatesForKotterVariablesDoNotSeparate) {
       const Verdict z = judge(model(), lax_isotropic_zero(a, x), lax_isotropic_zero(b, x), x);
       EXPECT_LT(z.commutator, kCommutes) << trial << " roots " << a << b;
       EXPECT_GT(z.defect, kDoesNotSeparate) << trial << " roots " << a << b;
+    }
+  }
+}
+
+TEST(BrunSeparability, EigenvectorPolesWithTheSphereConicNormalisationDoNotCommute) {
+  // On f = 0 two of the three roots are u1, u2 (the control: they commute and separate); on
+  // f ≠ 0 no pair of roots commutes (normalised brackets 0.01 .. 0.65 measured for |f| ≥ 0.3).
+  std::mt19937_64 rng(23);
+  for (int trial = 0; trial < 3; ++trial) {
+    const State x0 = random_state(rng, true);
+    int near = -1, other = -1;
+    for (int k = 0; k < 3; ++k) {
+      const Complex r = lax_dynamical_pole(k, x0)(x0);
+      if (std::abs(r - sphero_conic(0)(x0)) < 1e-9) near = k;
+      if (std::abs(r - sphero_conic(1)(x0)) < 1e-9) other = k;
+    }
+    ASSERT_GE(near, 0) << trial;
+    ASSERT_GE(other, 0) << trial;
+    const Verdict v =
+        judge(model(), lax_dynamical_pole(near, x0), lax_dynamical_pole(other, x0), x0);
+    EXPECT_LT(v.commutator, kCommutes) << trial;
+    EXPECT_LT(v.defect, kSeparatesToSecondOrder) << trial;
+    // A level with |f| ∈ [0.3, 1] (the brackets of the roots are O(f²)).
+    State x = random_state(rng, true);
+    x.m += (trial % 2 == 0 ? 1.0 : -1.0) *
+           (0.3 + 0.7 * std::uniform_real_distribution<double>(0, 1)(rng)) * x.gamma;
+    for (int a = 0; a < 3; ++a) {
+      const int b = (a + 1) % 3;
+      const Verdict z = judge(model(), lax_dynamical_pole(a, x), lax_dynamical_pole(b, x), x);
+      EXPECT_GT(z.commutator, kDoesNotSeparate) << trial << " roots " << a << b;
     }
   }
 }
