@@ -102,6 +102,18 @@ std::array<Complex, 3> brun_lax(const BrunCurve& k, const State& s, Complex u) {
   return X;
 }
 
+Eigen::Matrix3cd brun_rational_lax(const BrunCurve& k, const State& s, Complex l) {
+  const State x = to_working_frame(k, s);
+  Eigen::Matrix3cd L;
+  const Vec3& m = x.m;
+  L << 0, -m[2], m[1], m[2], 0, -m[0], -m[1], m[0], 0;
+  for (int i = 0; i < 3; ++i) {
+    L(i, i) -= l * k.lambda_ * k.e[i];
+    for (int j = 0; j < 3; ++j) L(i, j) += x.gamma[i] * x.gamma[j] / l;
+  }
+  return L;
+}
+
 BrunSpectralCurve brun_spectral_curve(const BrunCurve& k) {
   BrunSpectralCurve g;
   // D = N² − 4λf² P, N = n0 + n1 u + n2 u², P = u³ − S u² + S2 u − S3.

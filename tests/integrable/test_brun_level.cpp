@@ -213,6 +213,31 @@ TEST(BrunLevel, LaxQuadraticFormIsNPlusTwoRootLambdaFV) {
   }
 }
 
+TEST(BrunLevel, RationalLaxMatrixIsIsospectralWithTheBigonalCurve) {
+  // −ℓ det(μ − L(ℓ)) = λ z² P(v) + z N(v) + f² with v = −μ/(λℓ), z = λℓ² at random complex ℓ, μ:
+  // the characteristic polynomial is a function of h, c, f alone (so conserved).
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  for (int trial = 0; trial < 100; ++trial) {
+    const RandomLevel L = random_level(rng);
+    const BrunCurve k = brun_level(L.model, L.x0);
+    const std::complex<double> l(2 * U(rng), 2 * U(rng)), mu(4 * U(rng), 4 * U(rng));
+    const Eigen::Matrix3cd Lax = brun_rational_lax(k, L.x0, l);
+    const std::complex<double> lhs = -l * (mu * Eigen::Matrix3cd::Identity() - Lax).determinant();
+    const std::complex<double> v = -mu / (k.lambda_ * l), z = k.lambda_ * l * l;
+    std::complex<double> P(1.0);
+    for (int i = 0; i < 3; ++i) P *= v - k.e[i];
+    const std::complex<double> N =
+        (k.lambda_ * v + (k.c - k.lambda_ * (k.e[0] + k.e[1] + k.e[2]))) * v + 2 * k.kappa * k.h;
+    const std::complex<double> rhs = k.lambda_ * z * z * P + z * N + k.f * k.f;
+    // Sums of products of three entries of size ≤ |ℓ||λe| + |μ| + |m| + 1/|ℓ|, times |ℓ|: a few ε
+    // of entry³|ℓ| (≤ 0.73 ε measured); 64 ε.
+    const double entry =
+        std::abs(l) * std::abs(k.lambda_ * k.e[0]) + std::abs(mu) + L.x0.m.norm() + 1 / std::abs(l);
+    EXPECT_LT(std::abs(lhs - rhs), 64 * kEps * std::pow(entry, 3) * std::abs(l)) << trial;
+  }
+}
+
 TEST(BrunLevel, SpectralCurveBranchPointsAreTheRootsOfD) {
   std::mt19937_64 rng(15);
   for (int trial = 0; trial < 100; ++trial) {

@@ -12,6 +12,7 @@
 ///   {p1, p2} = f (u2 − u1) / (4 V γ1 γ2 γ3),  V = (e2 − e1)(e3 − e2)(e3 − e1):
 /// f times the area form of the sphere in (u1, u2) — a magnetic monopole of charge f.
 
+#include <Eigen/Core>
 #include <array>
 #include <complex>
 
@@ -81,5 +82,14 @@ struct BrunSpectralCurve {
 
 /// The spectral curve of the level of k.
 BrunSpectralCurve brun_spectral_curve(const BrunCurve& k);
+
+/// A Lax matrix with rational spectral parameter (working frame), of the twisted form
+///   L(ℓ) = ℓ A + m̂ + ℓ⁻¹ γγᵀ,  A = −λ diag(e1, e2, e3),  m̂ x = m × x
+/// (L(−ℓ) = −L(ℓ)ᵀ). It is isospectral: with v = −μ/(λℓ) and z = λℓ²,
+///   −ℓ det(μ I − L(ℓ)) = λ z² P(v) + z N(v) + f²   (|γ| = 1),
+/// so the curve is a double cover (ℓ² = z/λ) of the elliptic curve y² = D(v), D = N² − 4λf²P,
+/// branched over v = e1, e2, e3, ∞: the bigonal partner of the curve of brun_spectral_curve
+/// (a double cover of v² = P(u) branched over the roots of D).
+Eigen::Matrix3cd brun_rational_lax(const BrunCurve& k, const State& s, std::complex<double> l);
 
 }  // namespace newtop
