@@ -46,10 +46,10 @@ double brun_momentum_bracket(const BrunCurve& k, const State& s);
 /// The coupling K of brun_coupling written in the separated coordinates of the level f = k.f:
 /// Σ_i e_i (m_i − f γ_i) γ_i = −V γ1 γ2 γ3 Σ_s w_s/((u_t − u_s) P(u_s)), so
 ///   K = f² (u1 + u2 − e1 − e2 − e3) + 2f V γ1γ2γ3 (w1/P(u1) − w2/P(u2))/(u2 − u1),
-/// with V γ1γ2γ3 = S1S2S3 √(−P(u1) P(u2)). In Y_s = w_s/√P(u_s) and the points (u_s, √P(u_s))
-/// of the elliptic curve r² = P(u) the level is Y_s² + M(u_s) = K (s = 1, 2) with
-/// (u2 − u1)(K − f²(u1 + u2 − Σe)) = 2f S1S2S3 (r2 Y1 − r1 Y2) up to the branch of r (the symmetric
-/// form in which a change of variables mixing u and w must separate the level).
+/// with V γ1γ2γ3 = S1S2S3 √(−P(u1) P(u2)). In the real momenta t1 = w1/√P(u1),
+/// t2 = w2/√(−P(u2)) and ε = S1S2S3 the level reads t1² + M(u1) = K = M(u2) − t2² with
+///   K = f² (u1 + u2 − e1 − e2 − e3) + 2fε (√(−P(u2)) t1 + √P(u1) t2)/(u2 − u1)
+/// (docs/integrable.md, "The level as a reduced system").
 double brun_coupling_at(const BrunCurve& k, const BrunPoint& p, const std::array<double, 3>& S);
 
 /// The integrals h and c as functions of the separated coordinates on the level f = k.f (the
