@@ -68,6 +68,28 @@ double brun_momentum_bracket(const BrunCurve& k, const State& s) {
   return k.f * (u[1] - u[0]) / (4 * V * x.gamma.prod());
 }
 
+double brun_coupling_at(const BrunCurve& k, const BrunPoint& p, const std::array<double, 3>& S) {
+  const double P1 = brun_P(k, p.u[0]), P2 = brun_P(k, p.u[1]);
+  // V γ1γ2γ3 = S1S2S3 V Π_i √((u1 − e_i)(u2 − e_i)/P′(e_i)) = S1S2S3 √(−P(u1) P(u2)), since
+  // Π_i P′(e_i) = −V².
+  const double Vg = S[0] * S[1] * S[2] * std::sqrt(-P1 * P2);
+  const double f = k.f;
+  return f * f * (p.u[0] + p.u[1] - k.e[0] - k.e[1] - k.e[2]) +
+         2 * f * Vg * (p.w[0] / P1 - p.w[1] / P2) / (p.u[1] - p.u[0]);
+}
+
+BrunIntegrals brun_integrals_at(const BrunCurve& k, const BrunPoint& p,
+                                const std::array<double, 3>& S) {
+  const double u1 = p.u[0], u2 = p.u[1];
+  const double q1 = p.w[0] * p.w[0] / brun_P(k, u1), q2 = p.w[1] * p.w[1] / brun_P(k, u2);
+  const double sum_e = k.e[0] + k.e[1] + k.e[2];
+  const double K = brun_coupling_at(k, p, S);
+  BrunIntegrals r;
+  r.c = (q2 - q1) / (u1 - u2) - k.lambda_ * (u1 + u2) + k.lambda_ * sum_e + k.f * k.f;
+  r.h = (K + k.lambda_ * u1 * u2 + (u2 * q1 - u1 * q2) / (u1 - u2)) / (2 * k.kappa);
+  return r;
+}
+
 std::array<Complex, 3> brun_lax(const BrunCurve& k, const State& s, Complex u) {
   const State x = to_working_frame(k, s);
   const Complex sl = std::sqrt(Complex(k.lambda_));
@@ -78,6 +100,18 @@ std::array<Complex, 3> brun_lax(const BrunCurve& k, const State& s, Complex u) {
     X[i] = w[i] * x.m[i] + sl * w[(i + 1) % 3] * w[(i + 2) % 3] * x.gamma[i];
   }
   return X;
+}
+
+Eigen::Matrix3cd brun_rational_lax(const BrunCurve& k, const State& s, Complex l) {
+  const State x = to_working_frame(k, s);
+  Eigen::Matrix3cd L;
+  const Vec3& m = x.m;
+  L << 0, -m[2], m[1], m[2], 0, -m[0], -m[1], m[0], 0;
+  for (int i = 0; i < 3; ++i) {
+    L(i, i) -= l * k.lambda_ * k.e[i];
+    for (int j = 0; j < 3; ++j) L(i, j) += x.gamma[i] * x.gamma[j] / l;
+  }
+  return L;
 }
 
 BrunSpectralCurve brun_spectral_curve(const BrunCurve& k) {

@@ -117,6 +117,39 @@ TEST(BrunLevel, CoupledRelationsHoldWithTheCouplingK) {
   EXPECT_NEAR(brun_coupling(k, State{m, g}), 0.0, 64 * kEps);
 }
 
+TEST(BrunLevel, CouplingAndIntegralsInSeparatedCoordinates) {
+  // K, h and c from (u, w, S) alone (brun_coupling_at, brun_integrals_at) against K from the
+  // state and the integrals of the model: the level written in its sphero-conic coordinates.
+  std::mt19937_64 rng(16);
+  for (int trial = 0; trial < 200; ++trial) {
+    const RandomLevel L = random_level(rng);
+    const BrunCurve k = brun_level(L.model, L.x0);
+    const BrunPoint p = brun_point(k, L.x0);
+    const auto S = working_signs(k, L.x0);
+    // As in CoupledRelationsHoldWithTheCouplingK: terms of size |m|² (e3 − e1)² divided by
+    // |P(u_s)| and, for h and c, by u2 − u1.
+    double P = 1.0;
+    for (int s = 0; s < 2; ++s) P = std::min(P, std::abs(brun_P(k, p.u[s])));
+    const double scale = std::max(1.0, L.x0.m.squaredNorm()) * std::pow(k.e[2] - k.e[0], 2) / P;
+    const double tol = 1e3 * kEps * scale;
+    EXPECT_NEAR(brun_coupling_at(k, p, S), brun_coupling(k, L.x0), tol) << trial;
+    const BrunIntegrals I = brun_integrals_at(k, p, S);
+    const double spread = tol / (p.u[1] - p.u[0]);
+    EXPECT_NEAR(I.c, brun(L.model, L.x0), spread) << trial;
+    EXPECT_NEAR(I.h, energy(L.model, L.x0), spread / k.kappa) << trial;
+    // Routh's form: with t1 = w1/√P(u1), t2 = w2/√(−P(u2)) and ε = S1S2S3,
+    // 2κh = −[u2 (t1 − fε√(−P(u2))/u2)² + u1 (t2 − fε√P(u1)/u1)²]/(u2 − u1) + λu1u2
+    //       + f²κ²/(u1u2): the amended potential f²/(2γ·Iγ) (u1u2 = κ γ·Iγ) is of Stäckel form;
+    // only the gyroscopic shift of the momenta couples u1 and u2.
+    const double r1 = std::sqrt(brun_P(k, p.u[0])), r2 = std::sqrt(-brun_P(k, p.u[1]));
+    const double eps = S[0] * S[1] * S[2], f = k.f, u1 = p.u[0], u2 = p.u[1];
+    const double a1 = p.w[0] / r1 - f * eps * r2 / u2, a2 = p.w[1] / r2 - f * eps * r1 / u1;
+    const double routh = -(u2 * a1 * a1 + u1 * a2 * a2) / (u2 - u1) + k.lambda_ * u1 * u2 +
+                         f * f * k.kappa * k.kappa / (u1 * u2);
+    EXPECT_NEAR(routh, 2 * k.kappa * energy(L.model, L.x0), 2 * spread) << trial;
+  }
+}
+
 TEST(BrunLevel, MomentaCarryTheMonopoleBracket) {
   std::mt19937_64 rng(13);
   int checked = 0;
@@ -137,6 +170,20 @@ TEST(BrunLevel, MomentaCarryTheMonopoleBracket) {
     EXPECT_NEAR(bracket(u(0), p(0), L.x0), -1.0, kFiniteDifference * scale) << trial;
     EXPECT_NEAR(bracket(u(1), p(1), L.x0), -1.0, kFiniteDifference * scale) << trial;
     EXPECT_NEAR(bracket(u(0), p(1), L.x0), 0.0, kFiniteDifference * scale) << trial;
+    // The real momenta of Routh's form, t1 = w1/√P(u1), t2 = w2/√(−P(u2)):
+    // {t1, t2} = −4√(−P(u1)P(u2)) {p1, p2} = −εf(u2 − u1), ε = S1S2S3.
+    auto t = [&](int s) {
+      return [&k, s](const State& x) {
+        const BrunPoint q = brun_point(k, x);
+        return q.w[s] / std::sqrt(std::abs(brun_P(k, q.u[s])));
+      };
+    };
+    const BrunPoint q0 = brun_point(k, L.x0);
+    const auto S = working_signs(k, L.x0);
+    const double ft = -S[0] * S[1] * S[2] * k.f * (q0.u[1] - q0.u[0]);
+    EXPECT_NEAR(bracket(t(0), t(1), L.x0), ft,
+                kFiniteDifference * scale * std::max(1.0, std::abs(ft)))
+        << trial;
     const double expected = brun_momentum_bracket(k, L.x0);
     EXPECT_NEAR(bracket(p(0), p(1), L.x0), expected,
                 kFiniteDifference * scale * std::max(1.0, std::abs(expected)))
@@ -163,6 +210,31 @@ TEST(BrunLevel, LaxQuadraticFormIsNPlusTwoRootLambdaFV) {
     // Sums of terms |m|² |u − e| and |λ| |P(u)|, each to a few ε.
     const double scale = std::max(1.0, L.x0.m.squaredNorm()) * std::pow(std::abs(u) + 5.0, 3);
     EXPECT_LT(std::abs(lhs - rhs), 64 * kEps * scale) << trial;
+  }
+}
+
+TEST(BrunLevel, RationalLaxMatrixIsIsospectralWithTheBigonalCurve) {
+  // −ℓ det(μ − L(ℓ)) = λ z² P(v) + z N(v) + f² with v = −μ/(λℓ), z = λℓ² at random complex ℓ, μ:
+  // the characteristic polynomial is a function of h, c, f alone (so conserved).
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  for (int trial = 0; trial < 100; ++trial) {
+    const RandomLevel L = random_level(rng);
+    const BrunCurve k = brun_level(L.model, L.x0);
+    const std::complex<double> l(2 * U(rng), 2 * U(rng)), mu(4 * U(rng), 4 * U(rng));
+    const Eigen::Matrix3cd Lax = brun_rational_lax(k, L.x0, l);
+    const std::complex<double> lhs = -l * (mu * Eigen::Matrix3cd::Identity() - Lax).determinant();
+    const std::complex<double> v = -mu / (k.lambda_ * l), z = k.lambda_ * l * l;
+    std::complex<double> P(1.0);
+    for (int i = 0; i < 3; ++i) P *= v - k.e[i];
+    const std::complex<double> N =
+        (k.lambda_ * v + (k.c - k.lambda_ * (k.e[0] + k.e[1] + k.e[2]))) * v + 2 * k.kappa * k.h;
+    const std::complex<double> rhs = k.lambda_ * z * z * P + z * N + k.f * k.f;
+    // Sums of products of three entries of size ≤ |ℓ||λe| + |μ| + |m| + 1/|ℓ|, times |ℓ|: a few ε
+    // of entry³|ℓ| (≤ 0.73 ε measured); 64 ε.
+    const double entry =
+        std::abs(l) * std::abs(k.lambda_ * k.e[0]) + std::abs(mu) + L.x0.m.norm() + 1 / std::abs(l);
+    EXPECT_LT(std::abs(lhs - rhs), 64 * kEps * std::pow(entry, 3) * std::abs(l)) << trial;
   }
 }
 

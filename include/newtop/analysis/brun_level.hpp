@@ -12,6 +12,7 @@
 ///   {p1, p2} = f (u2 − u1) / (4 V γ1 γ2 γ3),  V = (e2 − e1)(e3 − e2)(e3 − e1):
 /// f times the area form of the sphere in (u1, u2) — a magnetic monopole of charge f.
 
+#include <Eigen/Core>
 #include <array>
 #include <complex>
 
@@ -42,6 +43,26 @@ double brun_coupling(const BrunCurve& k, const State& s);
 /// {p1, p2} = f (u2 − u1)/(4 V γ1 γ2 γ3) at a body-frame state (see above).
 double brun_momentum_bracket(const BrunCurve& k, const State& s);
 
+/// The coupling K of brun_coupling written in the separated coordinates of the level f = k.f:
+/// Σ_i e_i (m_i − f γ_i) γ_i = −V γ1 γ2 γ3 Σ_s w_s/((u_t − u_s) P(u_s)), so
+///   K = f² (u1 + u2 − e1 − e2 − e3) + 2f V γ1γ2γ3 (w1/P(u1) − w2/P(u2))/(u2 − u1),
+/// with V γ1γ2γ3 = S1S2S3 √(−P(u1) P(u2)). In the real momenta t1 = w1/√P(u1),
+/// t2 = w2/√(−P(u2)) and ε = S1S2S3 the level reads t1² + M(u1) = K = M(u2) − t2² with
+///   K = f² (u1 + u2 − e1 − e2 − e3) + 2fε (√(−P(u2)) t1 + √P(u1) t2)/(u2 − u1)
+/// (docs/integrable.md, "The level as a reduced system").
+double brun_coupling_at(const BrunCurve& k, const BrunPoint& p, const std::array<double, 3>& S);
+
+/// The integrals h and c as functions of the separated coordinates on the level f = k.f (the
+/// reduced system of the level: its Hamiltonian with the monopole bracket above). With
+/// q_s = w_s²/P(u_s) and K = brun_coupling_at,
+///   c − λ(e1 + e2 + e3) − f² = (q2 − q1)/(u1 − u2) − λ(u1 + u2),
+///   2κh = K + λ u1 u2 + (u2 q1 − u1 q2)/(u1 − u2).
+struct BrunIntegrals {
+  double h = 0, c = 0;
+};
+BrunIntegrals brun_integrals_at(const BrunCurve& k, const BrunPoint& p,
+                                const std::array<double, 3>& S);
+
 /// The Lax vector of the Clebsch system, X_i(u) = w_i m_i + √λ w_j w_k γ_i with w_i = √(u − e_i)
 /// (principal complex roots; √λ imaginary for λ < 0), working frame, (i, j, k) cyclic. For every
 /// u, Σ X_i² = N(u) + 2√λ f v with v = w1 w2 w3 (v² = P(u)): the quadratic form of the Lax
@@ -61,5 +82,14 @@ struct BrunSpectralCurve {
 
 /// The spectral curve of the level of k.
 BrunSpectralCurve brun_spectral_curve(const BrunCurve& k);
+
+/// A Lax matrix with rational spectral parameter (working frame), of the twisted form
+///   L(ℓ) = ℓ A + m̂ + ℓ⁻¹ γγᵀ,  A = −λ diag(e1, e2, e3),  m̂ x = m × x
+/// (L(−ℓ) = −L(ℓ)ᵀ). It is isospectral: with v = −μ/(λℓ) and z = λℓ²,
+///   −ℓ det(μ I − L(ℓ)) = λ z² P(v) + z N(v) + f²   (|γ| = 1),
+/// so the curve is a double cover (ℓ² = z/λ) of the elliptic curve y² = D(v), D = N² − 4λf²P,
+/// branched over v = e1, e2, e3, ∞: the bigonal partner of the curve of brun_spectral_curve
+/// (a double cover of v² = P(u) branched over the roots of D).
+Eigen::Matrix3cd brun_rational_lax(const BrunCurve& k, const State& s, std::complex<double> l);
 
 }  // namespace newtop
