@@ -3,7 +3,9 @@
 
 #include "newtop/phase/section.hpp"
 
+#include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "newtop/model/model.hpp"
 
@@ -96,15 +98,74 @@ void IntegralsDrift::merge(const IntegralsDrift& other) {
   }
 }
 
+namespace {
+
+/// The root a of α a² + 2β a + (κ − h) = 0 that makes g cross in the kept direction (ġ(a) of that
+/// sign; the larger root first), or none.
+template <class Rate>
+std::optional<double> crossing_root(double alpha, double beta, double kappa_minus_h,
+                                    Direction direction, Rate&& rate) {
+  const double disc = beta * beta - alpha * kappa_minus_h;
+  if (!(disc >= 0.0) || !(alpha > 0.0)) return std::nullopt;
+  const double root = std::sqrt(disc);
+  for (const double a : {(-beta + root) / alpha, (-beta - root) / alpha}) {
+    const double r = rate(a);
+    if (direction == Direction::both || (direction == Direction::up ? r > 0.0 : r < 0.0)) return a;
+  }
+  return std::nullopt;
+}
+
+/// Seeds on a surface with a momentum term (b_m ≠ 0; docs/section.md): γ over a Fibonacci
+/// lattice of the sphere; for each, m on the line {b_m·m + b_γ·γ = d, m·γ = f}, m = m0 + a t with
+/// t ∥ b_m × γ, and a a root of the energy equation crossing in the kept direction; K of the
+/// seeds found, evenly spread over the lattice's order.
+std::vector<State> seed_momentum_surface(const Model& model, const SurfaceFunction& g,
+                                         const Levels& levels, int K, Direction direction) {
+  const Body& body = model.body();
+  const Vec3 inv_i = body.inertia().cwiseInverse();
+  const int lattice = 64 * K;
+  const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
+  std::vector<State> found;
+  for (int j = 0; j < lattice; ++j) {
+    const double z = 1.0 - (2.0 * j + 1.0) / lattice;
+    const double r = std::sqrt((1.0 - z) * (1.0 + z));
+    const Vec3 gamma(r * std::cos(golden * j), r * std::sin(golden * j), z);
+    const Vec3 normal = g.b_m.cross(gamma);
+    if (!(normal.norm() > 1e-8 * g.b_m.norm())) continue;  // b_m ∥ γ: no line
+    const Vec3 t = normal.normalized();
+    // m0 = x b_m + y γ with b_m·m0 = d − b_γ·γ and γ·m0 = f (γ·γ = 1).
+    const double bb = g.b_m.squaredNorm(), bg = g.b_m.dot(gamma);
+    const double rhs1 = g.d - g.b_gamma.dot(gamma), rhs2 = levels.area;
+    const double det = bb - bg * bg;
+    const Vec3 m0 = ((rhs1 - bg * rhs2) / det) * g.b_m + ((bb * rhs2 - bg * rhs1) / det) * gamma;
+    const Vec3 u = m0 - body.gyrostat();
+    const double alpha = 0.5 * t.dot(inv_i.cwiseProduct(t));
+    const double beta = 0.5 * t.dot(inv_i.cwiseProduct(u));
+    const double kappa = 0.5 * u.dot(inv_i.cwiseProduct(u)) + potential(model, gamma);
+    auto rate = [&](double a) {
+      const State d = rhs(model, State{m0 + a * t, gamma});
+      return g.b_m.dot(d.m) + g.b_gamma.dot(d.gamma);
+    };
+    if (const auto a = crossing_root(alpha, beta, kappa - levels.energy, direction, rate)) {
+      found.push_back({m0 + *a * t, gamma});
+    }
+  }
+  if (static_cast<int>(found.size()) <= K) return found;
+  std::vector<State> seeds;
+  for (int j = 0; j < K; ++j) {
+    seeds.push_back(
+        found[static_cast<std::size_t>((j + 0.5) * static_cast<double>(found.size()) / K)]);
+  }
+  return seeds;
+}
+
+}  // namespace
+
 std::vector<State> seed_orbits(const Model& model, const Surface& surface, const Levels& levels,
                                int K, Direction direction) {
-  if (!surface.of_gamma_only()) {
-    throw InputError(
-        "--orbits: expected a surface of gamma alone (a plane through the Poisson "
-        "sphere), found '" +
-        surface.text + "'");
-  }
   if (K < 1) throw InputError("--orbits: expected an integer >= 1, found " + std::to_string(K));
+  const SurfaceFunction g(surface, model.body());
+  if (!g.b_m.isZero(0.0)) return seed_momentum_surface(model, g, levels, K, direction);
   const Body& body = model.body();
   const double norm = surface.a_gamma.norm();
   const Vec3 n = surface.a_gamma / norm;

@@ -88,7 +88,7 @@ TEST(SectionCli, BadInputIsOneLineBeforeWork) {
   for (const std::string args :
        {"--surface 'gamma4 = 0'", "--surface 'gamma3'",
         "--surface 'gamma3 = 0' --direction sideways", "--surface 'gamma3 = 0' --crossings 0",
-        "--surface 'omega1 = 0' --orbits 4", "--surface 'gamma3 = 0' --step 0.01 --tol 1e-9",
+        "--surface 'gamma3 = 0' --orbits 0", "--surface 'gamma3 = 0' --step 0.01 --tol 1e-9",
         "--surface 'gamma3 = 0' --step -1", "--surface 'gamma3 = 0' --energy 1",
         "--surface 'gamma3 = 0' --method nope"}) {
     const CliResult r = run("section " + brun() + " " + args + " --out " + csv.string());

@@ -128,9 +128,45 @@ TEST(SectionAccuracy, SeedsLieOnTheSurfaceAndTheLevels) {
   EXPECT_TRUE(phase::seed_orbits(model, surface, below, 12, Direction::up).empty());
   const phase::Surface outside = phase::parse_surface("gamma3 = 1.5");
   EXPECT_TRUE(phase::seed_orbits(model, outside, levels, 12, Direction::up).empty());
-  EXPECT_THROW(
-      phase::seed_orbits(model, phase::parse_surface("omega1 = 0"), levels, 4, Direction::up),
-      InputError);
+  EXPECT_THROW(phase::seed_orbits(model, surface, levels, 0, Direction::up), InputError);
+}
+
+// Surfaces with a momentum term: the seeds lie on the surface, the sphere and the levels to the
+// rounding of their terms, cross in the kept direction, and are K distinct points.
+TEST(SectionAccuracy, SeedsOnSurfacesOfTheMomentum) {
+  const QuadraticModel qm = test::generic_model(Vec3(0.1, -0.2, 0.3));
+  const Model model(qm);
+  const State x0 = test::generic_state(qm);
+  const phase::Levels levels{energy(qm, x0), area(x0)};
+  for (const char* text : {"omega1 = 0", "m2 + 0.3*gamma1 = 0.1", "omega3 - gamma3 = 0.2"}) {
+    const phase::Surface surface = phase::parse_surface(text);
+    const phase::SurfaceFunction g(surface, qm.body);
+    for (Direction dir : {Direction::up, Direction::down}) {
+      const std::vector<State> seeds = phase::seed_orbits(model, surface, levels, 10, dir);
+      ASSERT_EQ(seeds.size(), 10u) << text;
+      for (std::size_t i = 0; i < seeds.size(); ++i) {
+        const State& s = seeds[i];
+        EXPECT_LE(std::abs(g(s)), 8 * kEps * g.scale(s)) << text;
+        EXPECT_NEAR(geometric(s), 1.0, 4 * kEps) << text;
+        EXPECT_NEAR(area(s), levels.area, 16 * kEps * s.m.norm()) << text;
+        const double terms = 0.5 * s.m.squaredNorm() * qm.body.inertia().cwiseInverse().maxCoeff() +
+                             std::abs(potential(qm, s.gamma)) +
+                             std::abs(qm.field.lambda_) * qm.body.inertia().maxCoeff();
+        EXPECT_NEAR(energy(qm, s), levels.energy, 64 * kEps * terms) << text;
+        const State d = rhs(qm, s);
+        const double rate = g.b_m.dot(d.m) + g.b_gamma.dot(d.gamma);
+        EXPECT_GT(dir == Direction::up ? rate : -rate, 0.0) << text;
+        if (i > 0) {
+          EXPECT_GT((s.gamma - seeds[i - 1].gamma).norm(), 1e-3) << text;
+        }
+      }
+    }
+  }
+  // A level below the minimum of the energy on the surface is empty.
+  const phase::Levels below{-1e3, levels.area};
+  EXPECT_TRUE(
+      phase::seed_orbits(model, phase::parse_surface("omega1 = 0"), below, 10, Direction::up)
+          .empty());
 }
 
 // A seeded orbit starts on the surface: its start is its first crossing, and the next one is a

@@ -72,6 +72,18 @@ Mat3 moment_jacobian(const BasicModel<F>& model, const Vec3& gamma) {
   return moment_jacobian(model.body, model.field, gamma);
 }
 
+/// (∂L/∂γ) δ, the derivative of the moment along δ (a tangent vector's kick): the field's own
+/// moment_derivative(body, field, γ, δ) where it has one (the quadratic field: no Jacobian
+/// formed), moment_jacobian(model, γ) δ otherwise.
+template <Field F>
+Vec3 moment_derivative(const BasicModel<F>& model, const Vec3& gamma, const Vec3& delta) {
+  if constexpr (requires { moment_derivative(model.body, model.field, gamma, delta); }) {
+    return moment_derivative(model.body, model.field, gamma, delta);
+  } else {
+    return moment_jacobian(model, gamma) * delta;
+  }
+}
+
 /// A field with its own moment(body, field, γ) (found by ADL): one formed without the
 /// cancellation of γ × ∂V/∂γ, whose normal part can exceed the moment by (R/r)² far from the body
 /// (newtop/exact/exact_field.hpp).

@@ -49,6 +49,13 @@ inline Vec3 moment(const Body& body, const QuadraticField& field, const Vec3& ga
   return gamma.cross(grad_gamma(body, field, gamma));
 }
 
+/// The moment's derivative along δ, (∂L/∂γ) δ = δ × ∂V/∂γ + γ × λ Iδ, without forming ∂L/∂γ.
+inline Vec3 moment_derivative(const Body& body, const QuadraticField& field, const Vec3& gamma,
+                              const Vec3& delta) {
+  return delta.cross(grad_gamma(body, field, gamma)) +
+         gamma.cross(field.lambda_ * body.inertia().cwiseProduct(delta));
+}
+
 /// Jacobian of the moment, ∂L/∂γ = [γ]× λI − [M g r0 + λ Iγ]× ([v]× the matrix of v × ·).
 inline Mat3 moment_jacobian(const Body& body, const QuadraticField& field, const Vec3& gamma) {
   auto cross = [](const Vec3& v) {

@@ -54,8 +54,12 @@ void axis_flow_tangent(const Body& body, int a, double t, State& x, Tangent& V);
 /// The kick sub-flow over t, with its derivative applied to V.
 template <Field F>
 void kick_tangent(const BasicModel<F>& model, double t, State& x, Tangent& V) {
-  const Mat3 J = moment_jacobian(model, x.gamma);
-  V.topRows<3>() += t * (J * V.bottomRows<3>());
+  if (V.cols() == 1) {
+    V.col(0).head<3>() += t * moment_derivative(model, x.gamma, V.col(0).tail<3>());
+  } else {
+    const Mat3 J = moment_jacobian(model, x.gamma);
+    V.topRows<3>() += t * (J * V.bottomRows<3>());
+  }
   x.m += t * moment(model, x.gamma);
 }
 
@@ -93,25 +97,66 @@ class TangentSplittingStepper {
   std::array<int, 3> axes_{0, 1, 2};
 };
 
-/// Classical RK4 on the state and the variational equations together.
+/// Classical RK4 on the state and the variational equations together. One vector (the Lyapunov
+/// exponent, MEGNO, FLI) and six (the spectrum) take fixed-size paths: one vector by the
+/// directional derivative Df(x)v = (m × δω + δm × ω + (∂L/∂γ) δγ, γ × δω + δγ × ω), δω = I⁻¹δm,
+/// without forming Df (moment_derivative); six by the same formula column by column, with ∂L/∂γ
+/// formed once per stage.
 class TangentRk4Stepper {
  public:
   int order() const { return 4; }
   template <Field F>
   void step(const BasicModel<F>& model, State& x, Tangent& V, double h) const {
-    auto f = [&](const State& y, const Tangent& W, State& dy, Tangent& dW) {
-      dy = rhs(model, y);
-      dW = rhs_jacobian(model, y) * W;
-    };
-    State k1, k2, k3, k4;
-    Tangent l1, l2, l3, l4;
+    if (V.cols() == 1) {
+      Eigen::Matrix<double, 6, 1> W = V;
+      rk4(model, x, W, h);
+      V = W;
+    } else if (V.cols() == 6) {
+      Eigen::Matrix<double, 6, 6> W = V;
+      rk4(model, x, W, h);
+      V = W;
+    } else {
+      rk4(model, x, V, h);
+    }
+  }
+
+ private:
+  /// ẋ = f(x) and Ẇ = Df(x) W at (y, W).
+  template <Field F, class W>
+  static void f(const BasicModel<F>& model, const State& y, const W& w, State& dy, W& dw) {
+    const Vec3 om = omega(model.body, y);
+    dy = State{y.m.cross(om) + moment(model, y.gamma), y.gamma.cross(om)};
+    if constexpr (W::ColsAtCompileTime == 1) {
+      const Vec3 dm = w.template head<3>(), dg = w.template tail<3>();
+      const Vec3 d_omega = dm.cwiseQuotient(model.body.inertia());
+      dw.template head<3>() =
+          y.m.cross(d_omega) + dm.cross(om) + moment_derivative(model, y.gamma, dg);
+      dw.template tail<3>() = y.gamma.cross(d_omega) + dg.cross(om);
+    } else if constexpr (W::ColsAtCompileTime != Eigen::Dynamic) {
+      const Mat3 Jm = moment_jacobian(model, y.gamma);
+      const Vec3 inv_i = model.body.inertia().cwiseInverse();
+      for (int c = 0; c < W::ColsAtCompileTime; ++c) {
+        const Vec3 dm = w.col(c).template head<3>(), dg = w.col(c).template tail<3>();
+        const Vec3 d_omega = dm.cwiseProduct(inv_i);
+        dw.col(c).template head<3>() = y.m.cross(d_omega) + dm.cross(om) + Jm * dg;
+        dw.col(c).template tail<3>() = y.gamma.cross(d_omega) + dg.cross(om);
+      }
+    } else {
+      dw.noalias() = rhs_jacobian(model, y) * w;
+    }
+  }
+
+  template <Field F, class W>
+  static void rk4(const BasicModel<F>& model, State& x, W& V, double h) {
     auto add = [](const State& y, double c, const State& k) {
       return State{y.m + c * k.m, y.gamma + c * k.gamma};
     };
-    f(x, V, k1, l1);
-    f(add(x, h / 2, k1), V + (h / 2) * l1, k2, l2);
-    f(add(x, h / 2, k2), V + (h / 2) * l2, k3, l3);
-    f(add(x, h, k3), V + h * l3, k4, l4);
+    State k1, k2, k3, k4;
+    W l1(6, V.cols()), l2(6, V.cols()), l3(6, V.cols()), l4(6, V.cols());
+    f(model, x, V, k1, l1);
+    f(model, add(x, h / 2, k1), W(V + (h / 2) * l1), k2, l2);
+    f(model, add(x, h / 2, k2), W(V + (h / 2) * l2), k3, l3);
+    f(model, add(x, h, k3), W(V + h * l3), k4, l4);
     x.m += (h / 6) * (k1.m + 2 * k2.m + 2 * k3.m + k4.m);
     x.gamma += (h / 6) * (k1.gamma + 2 * k2.gamma + 2 * k3.gamma + k4.gamma);
     V += (h / 6) * (l1 + 2 * l2 + 2 * l3 + l4);
