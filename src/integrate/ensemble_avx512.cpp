@@ -1,0 +1,28 @@
+// The ensemble kernel for AVX-512: eight doubles per register, two registers per block. Compiled
+// with -mavx512f -ffp-contract=off (CMakeLists.txt); run only where the CPU has AVX-512F
+// (ensemble.cpp).
+
+#include "ensemble_kernel.hpp"
+
+#ifdef NEWTOP_ENSEMBLE_X86
+#include <immintrin.h>
+
+namespace newtop::detail {
+namespace {
+
+struct Avx512 {
+  typedef double V __attribute__((vector_size(64)));
+  static constexpr int B = 2;
+  static V splat(double x) { return V{x, x, x, x, x, x, x, x}; }
+  static bool all_le(V a, V b) {
+    return _mm512_cmp_pd_mask(__m512d(a), __m512d(b), _CMP_LE_OQ) == 0xFF;
+  }
+};
+
+}  // namespace
+
+void ensemble_run_avx512(const EnsembleTask& task) { ensemble_simd::run_blocks<Avx512>(task); }
+std::size_t ensemble_block_avx512() { return 8 * Avx512::B; }
+
+}  // namespace newtop::detail
+#endif
