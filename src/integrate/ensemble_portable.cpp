@@ -1,4 +1,4 @@
-// The ensemble kernel for any CPU: pairs of doubles (SSE2 on x86-64, plain code elsewhere), four
+// The ensemble kernel for any CPU: pairs of doubles (SSE2 on x86-64, plain code elsewhere), six
 // pairs per block. Compiled with -ffp-contract=off (CMakeLists.txt).
 
 #include "ensemble_kernel.hpp"
@@ -8,7 +8,7 @@ namespace {
 
 struct Portable {
   typedef double V __attribute__((vector_size(16)));
-  static constexpr int B = 4;
+  static constexpr int B = 6;
   static V splat(double x) { return V{x, x}; }
   static bool all_le(V a, V b) { return a[0] <= b[0] && a[1] <= b[1]; }
 };

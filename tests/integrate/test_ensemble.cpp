@@ -147,7 +147,7 @@ TEST(Ensemble, BitIdenticalToScalarStepperWithoutGyrostat) {
 TEST(Ensemble, IndependentOfLanesAndGrouping) {
   const QuadraticModel model = gyrostat_model();
   const double h = 0.05, w_max = 2.5;  // some lanes leave the series, most do not
-  const std::vector<State> x0 = random_states(model, 41, w_max, 777);
+  const std::vector<State> x0 = random_states(model, 150, w_max, 777);  // > 2 blocks of any path
   const CompositionTable& table = composition_table("splitting6");
   EnsembleStepper base(table, SimdPath::portable);
   EnsembleState ref(x0);
@@ -164,6 +164,7 @@ TEST(Ensemble, IndependentOfLanesAndGrouping) {
     for (std::size_t n : {std::size_t(1), std::size_t(2), std::size_t(7), simd_block(path) - 1,
                           simd_block(path), simd_block(path) + 1}) {
       for (std::size_t first : {std::size_t(0), std::size_t(5)}) {
+        ASSERT_LE(first + n, x0.size());
         EnsembleState part(std::span<const State>(x0).subspan(first, n));
         e.advance(model, part, h, 25);
         for (std::size_t i = 0; i < n; ++i) {
