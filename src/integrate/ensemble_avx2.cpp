@@ -4,6 +4,7 @@
 // -mavx2 -ffp-contract=off (CMakeLists.txt); run only where the CPU has AVX2 (ensemble.cpp).
 
 #include "ensemble_kernel.hpp"
+#include "ensemble_tangent_kernel.hpp"
 
 #ifdef NEWTOP_ENSEMBLE_X86
 #include <immintrin.h>
@@ -24,6 +25,9 @@ struct Avx2 {
 
 void ensemble_run_avx2(const EnsembleTask& task) { ensemble_simd::run_blocks<Avx2>(task); }
 std::size_t ensemble_block_avx2() { return 4 * Avx2::B; }
+void ensemble_tangent_run_avx2(const EnsembleTangentTask& task) {
+  ensemble_simd::run_tangent_blocks<Avx2>(task);
+}
 
 }  // namespace newtop::detail
 #endif

@@ -4,6 +4,7 @@
 // (CMakeLists.txt); run only where the CPU has AVX-512F (ensemble.cpp).
 
 #include "ensemble_kernel.hpp"
+#include "ensemble_tangent_kernel.hpp"
 
 #ifdef NEWTOP_ENSEMBLE_X86
 #include <immintrin.h>
@@ -24,6 +25,9 @@ struct Avx512 {
 
 void ensemble_run_avx512(const EnsembleTask& task) { ensemble_simd::run_blocks<Avx512>(task); }
 std::size_t ensemble_block_avx512() { return 8 * Avx512::B; }
+void ensemble_tangent_run_avx512(const EnsembleTangentTask& task) {
+  ensemble_simd::run_tangent_blocks<Avx512>(task);
+}
 
 }  // namespace newtop::detail
 #endif

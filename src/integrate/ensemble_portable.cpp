@@ -2,6 +2,7 @@
 // pairs per block. Compiled with -ffp-contract=off (CMakeLists.txt).
 
 #include "ensemble_kernel.hpp"
+#include "ensemble_tangent_kernel.hpp"
 
 namespace newtop::detail {
 namespace {
@@ -17,5 +18,8 @@ struct Portable {
 
 void ensemble_run_portable(const EnsembleTask& task) { ensemble_simd::run_blocks<Portable>(task); }
 std::size_t ensemble_block_portable() { return 2 * Portable::B; }
+void ensemble_tangent_run_portable(const EnsembleTangentTask& task) {
+  ensemble_simd::run_tangent_blocks<Portable>(task);
+}
 
 }  // namespace newtop::detail
