@@ -2,6 +2,8 @@
 // path this CPU has) against the scalar splitting stepper and Boost.Odeint's runge_kutta4 (on a
 // plain array with a hand-written right-hand side), one trajectory at a time, in the same run.
 // One benchmark iteration is one trajectory-step; rates are per CPU second of the one thread.
+// tangent_*: the same with one tangent vector per trajectory (the ensemble tangent stepper against
+// TangentSplittingStepper).
 // After the runs, each rate is printed as a ratio to the scalar stepper of the same table.
 // Run: build/bench/bench_ensemble --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //      --benchmark_enable_random_interleaving=true
@@ -15,6 +17,7 @@
 
 #include "newtop/integrate/ensemble.hpp"
 #include "newtop/newtop.hpp"
+#include "newtop/phase/ensemble_tangent.hpp"
 #include "wp_support.hpp"
 
 namespace {
@@ -63,6 +66,36 @@ void scalar(benchmark::State& st, const char* table) {
   st.SetItemsProcessed(st.iterations());
 }
 
+// With one tangent vector per trajectory (as MEGNO and the largest Lyapunov exponent use).
+void tangent_ensemble(benchmark::State& st, const char* table, SimdPath path) {
+  const QuadraticModel m = bench_model();
+  EnsembleState x;
+  for (int i = 0; i < kPoints; ++i) x.push_back(bench_state(m, i));
+  std::vector<phase::Tangent> V(kPoints, phase::Tangent::Ones(6, 1));
+  const CompositionTable& t = composition_table(table);
+  phase::EnsembleTangentStepper e(t, default_ordering(t), path);
+  while (st.KeepRunningBatch(kPoints * kStepsPerCall)) {
+    e.advance(m, x, V, kStep, kStepsPerCall);
+    benchmark::DoNotOptimize(x.m[0].data());
+  }
+  st.SetItemsProcessed(st.iterations());
+}
+
+void tangent_scalar(benchmark::State& st, const char* table) {
+  const QuadraticModel m = bench_model();
+  State x = bench_state(m);
+  phase::Tangent V = phase::Tangent::Ones(6, 1);
+  const CompositionTable& t = composition_table(table);
+  phase::TangentSplittingStepper s(t, default_ordering(t));
+  while (st.KeepRunningBatch(100)) {
+    for (int i = 0; i < 100; ++i) {
+      s.step(m, x, V, kStep);
+      benchmark::DoNotOptimize(V);
+    }
+  }
+  st.SetItemsProcessed(st.iterations());
+}
+
 void odeint_rk4(benchmark::State& st) {
   const QuadraticModel m = bench_model();
   const wp::QuadraticRhs<double> rhs(m);
@@ -94,16 +127,17 @@ class RatioReporter : public benchmark::ConsoleReporter {
   }
   void Finalize() override {
     ConsoleReporter::Finalize();
-    std::printf("\n%-32s %14s %10s\n", "benchmark", "steps/s/core", "/ scalar");
+    std::printf("\n%-38s %14s %10s\n", "benchmark", "steps/s/core", "/ scalar");
     for (const auto& [name, rate] : rate_) {
       const std::string table =
           name.substr(name.find('/') + 1, name.find('/', name.find('/') + 1) - name.find('/') - 1);
-      auto scalar = rate_.find("scalar/" + table + "/");
+      const std::string family = name.rfind("tangent_", 0) == 0 ? "tangent_scalar/" : "scalar/";
+      auto scalar = rate_.find(family + table + "/");
       if (scalar == rate_.end()) scalar = rate_.find("scalar/splitting2/");  // odeint's rk4
       if (scalar != rate_.end()) {
-        std::printf("%-32s %14.4g %10.2f\n", name.c_str(), rate, rate / scalar->second);
+        std::printf("%-38s %14.4g %10.2f\n", name.c_str(), rate, rate / scalar->second);
       } else {
-        std::printf("%-32s %14.4g %10s\n", name.c_str(), rate, "");
+        std::printf("%-38s %14.4g %10s\n", name.c_str(), rate, "");
       }
     }
   }
@@ -126,6 +160,14 @@ int main(int argc, char** argv) {
                                  [table](benchmark::State& st) { scalar(st, table); });
   }
   benchmark::RegisterBenchmark("odeint_runge_kutta4/rk4/", odeint_rk4);
+  for (SimdPath path : {SimdPath::portable, SimdPath::avx2, SimdPath::avx512}) {
+    if (!simd_path_available(path)) continue;
+    benchmark::RegisterBenchmark(
+        ("tangent_ensemble/splitting2/" + std::string(simd_path_name(path))).c_str(),
+        [path](benchmark::State& st) { tangent_ensemble(st, "splitting2", path); });
+  }
+  benchmark::RegisterBenchmark("tangent_scalar/splitting2/",
+                               [](benchmark::State& st) { tangent_scalar(st, "splitting2"); });
   benchmark::Initialize(&argc, argv);
   RatioReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
