@@ -1,6 +1,7 @@
 // Running a sweep: points over OpenMP threads (dynamic schedule), results by index, and a
 // checkpoint of the finished points that survives SIGKILL (docs/sweep.md).
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <sstream>
 
 #include "newtop/sweep/sweep.hpp"
+#include "newtop/sweep/sweep_ensemble.hpp"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -178,6 +180,25 @@ SweepRun run_sweep(const SweepFile& s, const RunOptions& o) {
 #ifdef _OPENMP
   threads = o.threads > 0 ? o.threads : omp_get_max_threads();
 #endif
+  if (ensemble_sweep(s)) {
+    // Trajectory quantities only: batches of points through the ensemble stepper
+    // (sweep_ensemble.hpp), each point's result the same bits as evaluate_point's; a batch fills at
+    // least one block of SIMD lanes.
+    const auto batch = std::clamp<std::int64_t>((count + threads - 1) / threads, 64, 256);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+    for (std::int64_t first = 0; first < count; first += batch) {
+      if (stopped.load() || (o.stop && o.stop())) {
+        stopped = true;
+        continue;
+      }
+      const auto part = std::span<const std::size_t>(todo).subspan(
+          static_cast<std::size_t>(first),
+          static_cast<std::size_t>(std::min(batch, count - first)));
+      std::vector<PointResult> r = evaluate_points(s, part);
+      for (std::size_t k = 0; k < part.size(); ++k) ledger.record(part[k], std::move(r[k]));
+    }
+    return ledger.finish(!stopped.load(), threads);
+  }
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (std::int64_t j = 0; j < count; ++j) {
     if (stopped.load() || (o.stop && o.stop())) {

@@ -1,0 +1,189 @@
+// Points of a sweep advanced together by the ensemble stepper (sweep_ensemble.hpp). A group's run
+// follows the fixed-step driver (driver.hpp, detail::fixed_steps) step for step: n equal steps of
+// (t_end − t0)/n, a step limit checked before each step, a non-finite state ending the point's run,
+// the drift observed after every step; so each point's result is evaluate_point's, bit for bit.
+
+#include "newtop/sweep/sweep_ensemble.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "newtop/integrate/driver.hpp"
+#include "newtop/integrate/ensemble.hpp"
+#include "newtop/integrate/method_settings.hpp"
+#include "newtop/model/integrals.hpp"
+
+namespace newtop::sweep {
+namespace {
+
+bool wants(const SweepFile& s, const char* q) {
+  return std::find(s.quantities.begin(), s.quantities.end(), q) != s.quantities.end();
+}
+
+/// What the points of a group share: the run's settings as evaluate_point resolves them.
+struct RunKey {
+  QuadraticModel model;
+  MethodSettings method;
+  SplitOrdering ordering;  // method.ordering or the table's default
+  double t0 = 0, t1 = 0;
+  std::int64_t max_steps = 0;
+};
+
+bool same_run(const RunKey& a, const RunKey& b) {
+  const Body &x = a.model.body, &y = b.model.body;
+  const SplitOrdering &p = a.ordering, &q = b.ordering;
+  return x.inertia() == y.inertia() && x.mass() == y.mass() &&
+         x.center_of_mass() == y.center_of_mass() && x.gyrostat() == y.gyrostat() &&
+         a.model.field.g == b.model.field.g && a.model.field.lambda_ == b.model.field.lambda_ &&
+         a.method.name == b.method.name && a.method.step == b.method.step && p.axes == q.axes &&
+         p.kick_outside == q.kick_outside && p.by_moment == q.by_moment &&
+         p.free_body == q.free_body && a.t0 == b.t0 && a.t1 == b.t1 && a.max_steps == b.max_steps;
+}
+
+struct Member {
+  std::size_t slot;  // position in `indices`
+  Model model;       // the point's own (for its integrals and ω)
+  State initial;
+};
+
+struct Group {
+  RunKey key;
+  std::vector<Member> members;
+};
+
+/// The point's run settings, or nullopt when the point is not for an ensemble (another field or
+/// method, a non-finite initial state, or a scenario that does not build: evaluate_point_safely
+/// then reports it).
+std::optional<RunKey> run_key(const SweepFile& s, const io::Scenario& sc) {
+  if (sc.model.kind() != FieldKind::quadratic || !is_finite(sc.initial)) return std::nullopt;
+  const MethodSettings method = io::resolve_method(sc, s.integrate);
+  if (method_info(method.name).kind != MethodKind::splitting) return std::nullopt;
+  return RunKey{sc.model.quadratic(),
+                method,
+                method.ordering.value_or(default_ordering(composition_table(method.name))),
+                sc.integrate.t0,
+                io::resolve_t_end(sc, s.integrate),
+                sc.integrate.max_steps.value_or(IntegrateOptions{}.max_steps)};
+}
+
+struct Drift {
+  double energy = 0, area = 0, geometric = 0;
+};
+
+/// The values of evaluate_point for a finished run.
+PointResult finished(const SweepFile& s, const Member& p, double t, const State& x,
+                     const Drift& d) {
+  PointResult r{"ok", {}};
+  for (const std::string& q : s.quantities) {
+    if (q == "drift") {
+      r.values.insert(r.values.end(), {d.energy, d.area, d.geometric});
+    } else if (q == "final_state") {
+      const Vec3 w = omega(p.model.body(), x);
+      r.values.insert(r.values.end(),
+                      {t, w.x(), w.y(), w.z(), x.gamma.x(), x.gamma.y(), x.gamma.z()});
+    }
+  }
+  return r;
+}
+
+/// Runs a group; throws what the scalar run would throw for its shared settings.
+void run_group(const SweepFile& s, const Group& g, std::vector<std::optional<PointResult>>& out) {
+  const RunKey& k = g.key;
+  validate(k.method);
+  IntegrateOptions options;
+  options.max_steps = k.max_steps;
+  check_options(options);
+  const std::int64_t n = fixed_step_count(k.t0, k.t1, k.method.step);
+  EnsembleStepper stepper(composition_table(k.method.name), k.ordering);
+
+  EnsembleState x;
+  std::vector<IntegralValues> i0;
+  for (const Member& p : g.members) {
+    x.push_back(p.initial);
+    i0.push_back(integrals(p.model, p.initial));
+  }
+  const std::size_t size = g.members.size();
+  std::vector<Drift> drift(size);
+  std::vector<bool> alive(size, true);
+  // A non-finite component stays non-finite through every rotation, spin and kick (each adds to
+  // it), so without an observer the state is checked every `chunk` steps; the exact free-body
+  // flow and the drift are checked after every step, as the driver does.
+  const bool every_step = wants(s, "drift") || k.ordering.free_body == FreeBodySplit::exact;
+  const std::int64_t chunk = every_step ? 1 : 256;
+  const std::int64_t run = std::min(n, k.max_steps);
+  const double h = n > 0 ? (k.t1 - k.t0) / static_cast<double>(n) : 0.0;
+  for (std::int64_t done = 0; done < run;) {
+    const std::int64_t steps = std::min(chunk, run - done);
+    stepper.advance(k.model, x, h, steps);
+    done += steps;
+    for (std::size_t j = 0; j < size; ++j) {
+      if (!alive[j]) continue;
+      const State xj = x[j];
+      if (!is_finite(xj)) {
+        alive[j] = false;
+        out[g.members[j].slot] = PointResult{std::string(to_string(Status::non_finite)), {}};
+      } else if (every_step) {
+        const IntegralValues v = integrals(g.members[j].model, xj);
+        Drift& d = drift[j];
+        d.energy = std::max(d.energy, std::abs(v.energy - i0[j].energy));
+        d.area = std::max(d.area, std::abs(v.area - i0[j].area));
+        d.geometric = std::max(d.geometric, std::abs(v.geometric - i0[j].geometric));
+      }
+    }
+  }
+  for (std::size_t j = 0; j < size; ++j) {
+    if (!alive[j]) continue;
+    out[g.members[j].slot] = n > k.max_steps
+                                 ? PointResult{std::string(to_string(Status::step_limit)), {}}
+                                 : finished(s, g.members[j], n > 0 ? k.t1 : k.t0, x[j], drift[j]);
+  }
+}
+
+}  // namespace
+
+bool ensemble_sweep(const SweepFile& s) {
+  return !s.quantities.empty() &&
+         std::all_of(s.quantities.begin(), s.quantities.end(),
+                     [](const std::string& q) { return q == "final_state" || q == "drift"; });
+}
+
+std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std::size_t> indices,
+                                         std::size_t* in_ensemble) {
+  std::vector<std::optional<PointResult>> out(indices.size());
+  std::vector<Group> groups;
+  if (ensemble_sweep(s)) {
+    for (std::size_t slot = 0; slot < indices.size(); ++slot) {
+      try {
+        const io::Scenario sc = point_scenario(s, indices[slot]);
+        const std::optional<RunKey> key = run_key(s, sc);
+        if (!key) continue;
+        auto g = std::find_if(groups.begin(), groups.end(),
+                              [&](const Group& x) { return same_run(x.key, *key); });
+        if (g == groups.end()) g = groups.insert(groups.end(), Group{*key, {}});
+        g->members.push_back(Member{slot, sc.model, sc.initial});
+      } catch (const std::exception&) {  // evaluate_point_safely reports it
+      }
+    }
+  }
+  for (const Group& g : groups) {
+    try {
+      run_group(s, g, out);
+    } catch (const std::exception&) {  // the same error at every point: reported point by point
+      for (const Member& p : g.members) out[p.slot].reset();
+    }
+  }
+  if (in_ensemble) {
+    *in_ensemble = static_cast<std::size_t>(std::count_if(
+        out.begin(), out.end(), [](const std::optional<PointResult>& r) { return r.has_value(); }));
+  }
+  std::vector<PointResult> results;
+  results.reserve(indices.size());
+  for (std::size_t slot = 0; slot < indices.size(); ++slot) {
+    results.push_back(out[slot] ? std::move(*out[slot]) : evaluate_point_safely(s, indices[slot]));
+  }
+  return results;
+}
+
+}  // namespace newtop::sweep

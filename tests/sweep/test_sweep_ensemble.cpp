@@ -1,0 +1,112 @@
+// Sweeps of trajectory quantities through the ensemble stepper: every point's result (status and
+// values, bit for bit) is the one evaluate_point computes for the point alone, for any batch of
+// points, any thread count, and points whose runs differ (model, step, step limit) in one batch.
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "newtop/sweep/sweep.hpp"
+#include "newtop/sweep/sweep_ensemble.hpp"
+#include "support/cli.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using newtop::sweep::PointResult;
+using newtop::sweep::SweepFile;
+
+fs::path write_file(const std::string& name, const std::string& text) {
+  return newtop::test::write_text(newtop::test::scratch_path("newtop_sweep_ensemble", name), text);
+}
+
+// Status and values with the same bits (NaN included).
+void expect_same(const PointResult& a, const PointResult& b, std::size_t i) {
+  ASSERT_EQ(a.status, b.status) << "point " << i;
+  ASSERT_EQ(a.values.size(), b.values.size()) << "point " << i;
+  for (std::size_t k = 0; k < a.values.size(); ++k) {
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(a.values[k]), std::bit_cast<std::uint64_t>(b.values[k]))
+        << "point " << i << " column " << k << ": " << a.values[k] << " vs " << b.values[k];
+  }
+}
+
+// The heavy top of examples/heavy_top.toml (with a step limit) over its initial angular velocity:
+// 5 × 30 points, more than two blocks of lanes of any path; `extra` adds axes.
+std::string heavy_top_sweep(const std::string& quantities, const std::string& extra) {
+  const fs::path base =
+      write_file("heavy_top.toml",
+                 "[body]\ninertia = [2.0, 2.0, 1.0]\nmass = 1.0\ncenter_of_mass = [0.0, 0.0, 0.5]\n"
+                 "[field]\nkind = \"uniform\"\ng = 9.81\n"
+                 "[initial]\nomega = [0.3, 0.0, 20.0]\ngamma = [0.5, 0.0, 0.8660254037844386]\n"
+                 "[integrate]\nt_end = 0.5\nstep = 2e-3\nmax_steps = 1000000\n");
+  return "scenario = \"" + base.string() + "\"\nquantities = [" + quantities +
+         "]\n[[axes]]\nkey = \"initial.omega[0]\"\nstart = -1.0\nstop = 1.0\ncount = 5\n"
+         "[[axes]]\nkey = \"initial.omega[2]\"\nstart = 1.0\nstop = 30.0\ncount = 30\n" +
+         extra;
+}
+
+void expect_point_by_point(const SweepFile& s) {
+  ASSERT_TRUE(newtop::sweep::ensemble_sweep(s));
+  // Every point goes through the ensemble stepper (none falls back to evaluate_point).
+  std::vector<std::size_t> all(newtop::sweep::point_count(s));
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+  std::size_t in_ensemble = 0;
+  newtop::sweep::evaluate_points(s, all, &in_ensemble);
+  EXPECT_EQ(in_ensemble, all.size());
+  for (int threads : {1, 2}) {
+    newtop::sweep::RunOptions o;
+    o.threads = threads;
+    const newtop::sweep::SweepRun run = newtop::sweep::run_sweep(s, o);
+    ASSERT_EQ(run.results.size(), newtop::sweep::point_count(s));
+    for (std::size_t i = 0; i < run.results.size(); ++i) {
+      expect_same(run.results[i], newtop::sweep::evaluate_point_safely(s, i), i);
+    }
+  }
+}
+
+TEST(SweepEnsemble, FinalStateAndDriftAreEvaluatePointsBits) {
+  const SweepFile s = newtop::sweep::load_sweep(
+      write_file("both.toml", heavy_top_sweep("\"final_state\", \"drift\"", "")));
+  expect_point_by_point(s);
+  // The points did run and drift a little (a run that stood still would agree trivially).
+  const PointResult r = newtop::sweep::evaluate_point(s, 7);
+  ASSERT_EQ(r.status, "ok");
+  EXPECT_EQ(r.values[0], 0.5);                 // t
+  EXPECT_GT(r.values[7], 0.0);                 // drift_energy
+  EXPECT_NE(r.values[6], 0.8660254037844386);  // gamma3 moved
+}
+
+TEST(SweepEnsemble, FinalStateAloneIsEvaluatePointsBits) {
+  // Without drift the state is checked for non-finite numbers every 256 steps only.
+  expect_point_by_point(
+      newtop::sweep::load_sweep(write_file("final.toml", heavy_top_sweep("\"final_state\"", ""))));
+}
+
+// Points of one batch with different models (C), steps, methods' step limits: grouped by run.
+TEST(SweepEnsemble, PointsWithDifferentRunsInOneBatch) {
+  const std::string extra =
+      "[[axes]]\nkey = \"body.inertia[2]\"\nvalues = [1.0, 1.5]\n"
+      "[[axes]]\nkey = \"integrate.max_steps\"\nvalues = [249, 250]\n";
+  const SweepFile s = newtop::sweep::load_sweep(
+      write_file("mixed.toml", heavy_top_sweep("\"drift\", \"final_state\"", extra)));
+  expect_point_by_point(s);
+  // Both outcomes, at the edge: the run takes 250 steps.
+  EXPECT_EQ(newtop::sweep::evaluate_point(s, 0).status, "step_limit");
+  EXPECT_EQ(newtop::sweep::evaluate_point(s, 1).status, "ok");
+  // Any subset, in any order, as one batch.
+  std::vector<std::size_t> some;
+  for (std::size_t i = newtop::sweep::point_count(s); i-- > 0;) {
+    if (i % 3 != 1) some.push_back(i);
+  }
+  const std::vector<PointResult> r = newtop::sweep::evaluate_points(s, some);
+  ASSERT_EQ(r.size(), some.size());
+  for (std::size_t k = 0; k < some.size(); ++k) {
+    expect_same(r[k], newtop::sweep::evaluate_point_safely(s, some[k]), some[k]);
+  }
+}
+
+}  // namespace
