@@ -18,8 +18,8 @@ namespace {
 /// At most this many points (a CSV of 10⁸ rows is already 10 GB).
 constexpr double kMaxPoints = 1e8;
 
-const std::vector<std::string> kTopKeys{"scenario", "quantities", "combine",
-                                        "axes",     "stability",  "integrate"};
+const std::vector<std::string> kTopKeys{"scenario",  "quantities", "combine", "axes",
+                                        "stability", "integrate",  "level"};
 const std::vector<std::string> kAxisKeys{"key", "start", "stop", "count", "scale", "values"};
 
 /// start, stop, count and scale (linear or log) of one [[axes]] entry, or its values.
@@ -123,6 +123,33 @@ void read_integrate(io::TableReader& top, SweepFile& s) {
   r.finish();
 }
 
+void read_level(io::TableReader& top, SweepFile& s) {
+  const toml::table* t = top.table("level");
+  if (!t) return;
+  io::TableReader r(*t, s.source, "level");
+  r.check_keys({"energy", "solve", "sign"});
+  EnergyLevel level;
+  level.energy = r.number("energy");
+  const std::string solve = r.has("solve") ? r.string("solve") : "omega3";
+  if (solve != "omega1" && solve != "omega2" && solve != "omega3") {
+    r.fail("solve", "expected omega1, omega2 or omega3, found '" + solve + "'");
+  }
+  level.component = solve.back() - '1';
+  const std::string sign = r.has("sign") ? r.string("sign") : "+";
+  if (sign != "+" && sign != "-") r.fail("sign", "expected \"+\" or \"-\", found '" + sign + "'");
+  level.sign = sign == "+" ? 1.0 : -1.0;
+  r.finish();
+  for (const std::string& q : s.quantities) {
+    if (q == "stability" || q == "equilibria") {
+      top.fail("level",
+               "applies to the trajectory quantities (drift, final_state, megno, "
+               "lyapunov_max), found the quantity '" +
+                   q + "'");
+    }
+  }
+  s.level = level;
+}
+
 void read_axes(const toml::table& doc, SweepFile& s) {
   const toml::node* n = doc.get("axes");
   if (!n) return;
@@ -187,6 +214,7 @@ SweepFile load_sweep(const std::string& path) {
   read_axes(doc, s);
   read_stability(top, s);
   read_integrate(top, s);
+  read_level(top, s);
   double points = 1;
   for (const Axis& a : s.axes) {
     if (s.combine == Combine::zip && a.values.size() != s.axes.front().values.size()) {

@@ -186,6 +186,25 @@ std::vector<std::string> quantity_columns(const SweepFile& s) {
   return c;
 }
 
+/// Moves the initial state onto the sweep's energy level: ω_i with ½ I_i ω_i² = h − V(γ) −
+/// ½ Σ_{j≠i} I_j ω_j², of the sign asked for (m_i = I_i ω_i + k_i). A level out of reach at this
+/// point (the right side negative) leaves a non-finite state: the point is `off_level`.
+void move_onto_level(const EnergyLevel& level, io::Scenario& sc) {
+  const Body& body = sc.model.body();
+  const int i = level.component;
+  const Vec3 w = omega(body, sc.initial);
+  double rest = level.energy - potential(sc.model, sc.initial.gamma);
+  for (int j = 0; j < 3; ++j) {
+    if (j != i) rest -= 0.5 * body.inertia()[j] * w[j] * w[j];
+  }
+  const double wi2 = 2.0 * rest / body.inertia()[i];
+  if (!(wi2 >= 0.0)) {
+    sc.initial.m.setConstant(kNaN);
+    return;
+  }
+  sc.initial.m[i] = body.inertia()[i] * (level.sign * std::sqrt(wi2)) + body.gyrostat()[i];
+}
+
 io::Scenario point_scenario(const SweepFile& s, std::size_t index, StabilityOptions* options) {
   const std::vector<double> values = point_values(s, index);
   const std::string text = set_keys(s, values);
@@ -196,7 +215,9 @@ io::Scenario point_scenario(const SweepFile& s, std::size_t index, StabilityOpti
     }
   }
   try {
-    return io::parse_scenario(text, s.base_source);
+    io::Scenario sc = io::parse_scenario(text, s.base_source);
+    if (s.level) move_onto_level(*s.level, sc);
+    return sc;
   } catch (const InputError& e) {
     // The column may have moved where a value was rewritten on the line: name the file alone.
     std::string what = e.what();
@@ -220,6 +241,7 @@ void check_points(SweepFile& s) {
       s.input_files = {s.source};
       s.input_files.insert(s.input_files.end(), sc.input_files.begin(), sc.input_files.end());
     }
+    if (s.level && !is_finite(sc.initial)) continue;  // off the level: reported per point
     try {
       if (wants(s, "stability")) stability_state(sc, o);
       if (wants(s, "megno") || wants(s, "lyapunov_max")) {
@@ -241,6 +263,7 @@ PointResult evaluate_point(const SweepFile& s, std::size_t index) {
   StabilityOptions o;
   const io::Scenario sc = point_scenario(s, index, &o);
   PointResult r{"ok", {}};
+  if (s.level && !is_finite(sc.initial)) return {"off_level", {}};
   std::optional<phase::ChaosResult> chaos;
   if (wants(s, "megno") || wants(s, "lyapunov_max")) {  // one tangent run for both (newtop chaos)
     const MethodSettings method = io::resolve_method(sc, s.integrate);

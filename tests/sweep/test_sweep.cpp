@@ -161,6 +161,44 @@ TEST(Sweep, MegnoOfAnIntegrableCaseIsTwoAndThatOfNewtopChaos) {
   EXPECT_EQ(run.results[0].values[1], j["lyapunov_max"].get<double>());
 }
 
+// [level]: every start on the energy level h (the final state's energy, computed here from the
+// spec's formula, equals h within the run's own energy drift), the chosen sign of the solved
+// component, and the grid points where h is out of reach `off_level` with no numbers.
+TEST(Sweep, LevelPutsEveryStartOnTheEnergyLevel) {
+  const double h = 1.5;
+  const SweepFile s = newtop::sweep::load_sweep(write_file(
+      "level.toml",
+      "scenario = \"" + example("section_chaotic.toml") +
+          "\"\nquantities = [\"drift\", \"final_state\"]\n[level]\nenergy = 1.5\nsolve = "
+          "\"omega2\"\nsign = \"-\"\n[[axes]]\nkey = \"initial.omega[0]\"\nstart = -2.2\nstop = "
+          "2.2\ncount = 9\n[integrate]\nt_end = 5.0\nstep = 0.01\n"));
+  // The scenario's body (section_chaotic.toml): I, M r0, g, λ of spec §3.
+  const newtop::Vec3 I(1.0, 1.5, 2.2), Mr0(0.3, 0.2, 0.1);
+  const double g = -0.4, lambda = -0.8;
+  const newtop::sweep::SweepRun run = newtop::sweep::run_sweep(s, {});
+  int ok = 0, off = 0;
+  for (std::size_t k = 0; k < run.results.size(); ++k) {
+    const auto& r = run.results[k];
+    const newtop::io::Scenario sc = newtop::sweep::point_scenario(s, k);
+    if (r.status == "off_level") {
+      ++off;
+      EXPECT_TRUE(r.values.empty());
+      continue;
+    }
+    ASSERT_EQ(r.status, "ok");
+    ++ok;
+    EXPECT_LT(newtop::omega(sc.model.body(), sc.initial)[1], 0.0);  // sign = "-"
+    // values: drift_energy, drift_area, drift_geometric, t, p, q, r, gamma1..3
+    const newtop::Vec3 w(r.values[4], r.values[5], r.values[6]);
+    const newtop::Vec3 gm(r.values[7], r.values[8], r.values[9]);
+    const double e = 0.5 * w.dot(I.cwiseProduct(w)) + g * Mr0.dot(gm) +
+                     0.5 * lambda * gm.dot(I.cwiseProduct(gm));
+    EXPECT_LE(std::abs(e - h), r.values[0] + 1e-13) << k;
+  }
+  EXPECT_EQ(ok, 7);  // |omega1| = 2.2 leaves no room on the level (½ 2.2² > h − V − ½ I3 r²)
+  EXPECT_EQ(off, 2);
+}
+
 struct BadSweep {
   const char* name;
   std::string text;
@@ -192,6 +230,12 @@ TEST(Sweep, BadSweepFilesGetOneLineAndNoOutput) {
        base +
            "quantities = [\"stability\"]\n[[axes]]\nkey = \"initial.omega[0]\"\nvalues = [0.5]\n",
        "stability"},
+      {"level_key", base + "quantities = [\"drift\"]\n[level]\nenergy = 1\nsolve = \"m3\"\n",
+       "solve"},
+      {"level_with_stability", base + "quantities = [\"stability\"]\n[level]\nenergy = 1\n",
+       "level"},
+      {"level_without_energy", base + "quantities = [\"drift\"]\n[level]\nsign = \"-\"\n",
+       "energy"},
       {"zip_lengths",
        base + "quantities = [\"drift\"]\ncombine = \"zip\"\n" + axis +
            "values = [2.2, 2.3]\n[[axes]]\nkey = \"body.inertia[1]\"\nvalues = [1.5]\n",

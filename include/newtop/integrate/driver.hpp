@@ -28,11 +28,6 @@ struct NoObserver {
   void operator()(double, const State&) const {}
 };
 
-inline bool is_finite(const State& s) { return s.m.allFinite() && s.gamma.allFinite(); }
-inline bool is_finite(const OrientedState& s) {
-  return is_finite(static_cast<const State&>(s)) && s.q.coeffs().allFinite();
-}
-
 namespace detail {
 
 /// The outcome of a run that has not moved from (t0, x).

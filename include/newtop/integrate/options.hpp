@@ -45,6 +45,12 @@ void check_state(const State& x);
 /// The same, and `quaternion` unless q is finite and of norm 1 within kUnitQuaternionTolerance.
 void check_state(const OrientedState& x);
 
+/// Whether every component of the state (and of the attitude) is finite.
+inline bool is_finite(const State& s) { return s.m.allFinite() && s.gamma.allFinite(); }
+inline bool is_finite(const OrientedState& s) {
+  return is_finite(static_cast<const State&>(s)) && s.q.coeffs().allFinite();
+}
+
 /// A quaternion handed to a run is a unit one to this tolerance on |‖q‖ − 1| (it is normalised).
 inline constexpr double kUnitQuaternionTolerance = 1e-6;
 

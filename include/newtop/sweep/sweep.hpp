@@ -34,6 +34,14 @@ struct StabilityOptions {
   double omega = 0.0;
 };
 
+/// `[level]`: every point's initial state moved onto one energy level by solving the energy
+/// equation for one component of ω (in the body's principal axes), with the sign asked for.
+struct EnergyLevel {
+  double energy = 0.0;
+  int component = 2;  ///< ω_1, ω_2, ω_3 → 0, 1, 2
+  double sign = 1.0;
+};
+
 /// A sweep file, read and checked: every point's scenario has been built once (bad input at any
 /// point is reported before any work).
 struct SweepFile {
@@ -46,6 +54,7 @@ struct SweepFile {
   std::vector<Axis> axes;
   StabilityOptions stability;
   io::IntegrateOverrides integrate;
+  std::optional<EnergyLevel> level;
   std::vector<std::string> input_files;  ///< the sweep file, the base and its mesh files
 };
 
