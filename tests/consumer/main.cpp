@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <newtop/io/json.hpp>
 #include <newtop/io/mesh.hpp>
 #include <newtop/io/output.hpp>
 #include <newtop/io/scenario.hpp>
