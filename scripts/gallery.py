@@ -133,6 +133,11 @@ def sweep_figures(g: Gallery):
     g.add("sweep_megno.png", plot.figure(results.load(megno), quantity="megno"), [c],
           ["Sweep: megno over initial.omega[0] × initial.omega[1]"],
           ["initial.omega[0]", "initial.omega[1]"])
+    level = g.file("sweep_megno_level.csv")
+    c = g.run("sweep", example("sweep_megno_level.toml"), "--quiet", "--out", level)[0]
+    g.add("sweep_megno_level.png", plot.figure(results.load(level), quantity="megno"), [c],
+          ["Sweep: megno over initial.omega[0] × initial.omega[1]"],
+          ["initial.omega[0]", "initial.omega[1]"])
 
 
 def phase_figures(g: Gallery):
