@@ -180,8 +180,8 @@ const RegisterCommand reg{Command{
       sub.add_option("--crossings", a->crossings,
                      "stop after N crossings per orbit (default 1000)");
       auto* orbits = sub.add_option("--orbits", a->orbits,
-                                    "phase portrait: K orbits seeded on the surface (surface of "
-                                    "gamma alone) on the scenario's energy and area levels");
+                                    "phase portrait: K orbits seeded on the surface, on the "
+                                    "scenario's energy and area levels (docs/section.md)");
       sub.add_option("--energy", a->energy, "energy level of the seeded orbits")->needs(orbits);
       sub.add_option("--area", a->area, "area level m.gamma of the seeded orbits")->needs(orbits);
       add_integration_options(sub, a->integration);
