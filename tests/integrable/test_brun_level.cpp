@@ -36,9 +36,11 @@ RandomLevel random_level(std::mt19937_64& rng) {
   const double A = 1.25 + 0.25 * U(rng), B = A + 0.45 + 0.25 * U(rng);
   const double C = B + 0.2 + (A - 0.4) * 0.5 * (1 + U(rng));
   const double lambda = 2.0 * U(rng);
-  Vec3 g(U(rng), U(rng), U(rng));
+  Vec3 g;  // drawn in order: the arguments of one call are evaluated in no fixed order
+  for (int i = 0; i < 3; ++i) g[i] = U(rng);
   g.normalize();
-  const Vec3 m(U(rng), U(rng), U(rng));
+  Vec3 m;
+  for (int i = 0; i < 3; ++i) m[i] = U(rng);
   return {QuadraticModel{Body::from_principal(Vec3(A, B, C), 1.0, Vec3::Zero()),
                          QuadraticField::coulomb(0.0, lambda == 0.0 ? 0.5 : lambda)},
           State{m, g}};
