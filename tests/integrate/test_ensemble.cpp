@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "newtop/integrate/ensemble.hpp"
+#include "support/ensemble.hpp"
 #include "support/problems.hpp"
 
 namespace newtop {
@@ -21,22 +22,8 @@ namespace {
 
 using test::kEps;
 
-// The guarantee needs a scalar stepper compiled without fused multiply-adds; a build for a CPU
-// with FMA (e.g. -march=native) lets the compiler contract a·b + c in it, and the ensemble then
-// agrees to round-off only.
-#if defined(__FMA__)
-constexpr bool kScalarMayContract = true;
-#else
-constexpr bool kScalarMayContract = false;
-#endif
-
-std::vector<SimdPath> available_paths() {
-  std::vector<SimdPath> p;
-  for (SimdPath s : {SimdPath::portable, SimdPath::avx2, SimdPath::avx512}) {
-    if (simd_path_available(s)) p.push_back(s);
-  }
-  return p;
-}
+using test::available_paths;
+using test::kScalarMayContract;
 
 // Random states of the generic body: ω in a box of half-width w_max, γ uniform on the sphere.
 // With h w_max ≥ 0.1 some rotation angles leave both Taylor series (θ² > 1e-2) and use the
@@ -44,13 +31,8 @@ std::vector<SimdPath> available_paths() {
 std::vector<State> random_states(const QuadraticModel& model, std::size_t n, double w_max,
                                  unsigned seed) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  std::normal_distribution<double> g;
   std::vector<State> x;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 w(w_max * u(rng), w_max * u(rng), w_max * u(rng));
-    x.push_back(state_from_omega(model.body, w, Vec3(g(rng), g(rng), g(rng)).normalized()));
-  }
+  for (std::size_t i = 0; i < n; ++i) x.push_back(test::random_start(model.body, w_max, rng));
   return x;
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "newtop/phase/ensemble_tangent.hpp"
+#include "support/ensemble.hpp"
 #include "support/problems.hpp"
 
 namespace newtop::phase {
@@ -19,19 +20,8 @@ namespace {
 
 using test::kEps;
 
-#if defined(__FMA__)
-constexpr bool kScalarMayContract = true;  // see test_ensemble.cpp
-#else
-constexpr bool kScalarMayContract = false;
-#endif
-
-std::vector<SimdPath> available_paths() {
-  std::vector<SimdPath> p;
-  for (SimdPath s : {SimdPath::portable, SimdPath::avx2, SimdPath::avx512}) {
-    if (simd_path_available(s)) p.push_back(s);
-  }
-  return p;
-}
+using test::available_paths;
+using test::kScalarMayContract;
 
 struct Points {
   std::vector<State> x;
@@ -44,11 +34,9 @@ Points random_points(const QuadraticModel& model, std::size_t n, double w_max, i
                      unsigned seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  std::normal_distribution<double> g;
   Points p;
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 w(w_max * u(rng), w_max * u(rng), w_max * u(rng));
-    p.x.push_back(state_from_omega(model.body, w, Vec3(g(rng), g(rng), g(rng)).normalized()));
+    p.x.push_back(test::random_start(model.body, w_max, rng));
     Tangent V(6, columns);
     for (int r = 0; r < 6; ++r) {
       for (int c = 0; c < columns; ++c) V(r, c) = u(rng);
