@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <string>
 
 #include "../io/toml_parse.hpp"
 #include "../io/toml_reader.hpp"
@@ -98,7 +100,14 @@ std::string set_keys(const SweepFile& s, const std::vector<double>& values) {
     }
     spans.emplace_back(byte_offset(s.base_text, n->source().begin),
                        byte_offset(s.base_text, n->source().end));
-    texts.push_back(format_number(values[k]));
+    // An integer key of the base (max_steps, every) keeps an integer literal for an integral
+    // value: 1e6 is written 1000000, not 1e+06, which the scenario's integer keys would refuse.
+    const double v = values[k];
+    if (n->is_integer() && v == std::trunc(v) && std::abs(v) < 9007199254740992.0) {
+      texts.push_back(std::to_string(static_cast<std::int64_t>(v)));
+    } else {
+      texts.push_back(format_number(v));
+    }
   }
   // From the last value to the first, so that the earlier offsets stay valid.
   std::vector<std::size_t> order(spans.size());

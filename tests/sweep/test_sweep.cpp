@@ -161,6 +161,18 @@ TEST(Sweep, MegnoOfAnIntegrableCaseIsTwoAndThatOfNewtopChaos) {
   EXPECT_EQ(run.results[0].values[1], j["lyapunov_max"].get<double>());
 }
 
+// A swept integer key of the base keeps an integer literal: 1e6 is written 1000000 (the scenario
+// reader refuses 1e+06 for an integer key such as [output] every).
+TEST(Sweep, IntegerKeysTakeIntegralValues) {
+  const SweepFile s = newtop::sweep::load_sweep(
+      write_file("integer.toml", "scenario = \"" + example("heavy_top.toml") +
+                                     "\"\nquantities = [\"drift\"]\n[[axes]]\nkey = "
+                                     "\"output.every\"\nvalues = [1e6, 20]\n[integrate]\nt_end = "
+                                     "0.01\n"));
+  EXPECT_EQ(newtop::sweep::point_scenario(s, 0).output.every, 1000000);
+  EXPECT_EQ(newtop::sweep::point_scenario(s, 1).output.every, 20);
+}
+
 // [level]: every start on the energy level h (the final state's energy, computed here from the
 // spec's formula, equals h within the run's own energy drift), the chosen sign of the solved
 // component, and the grid points where h is out of reach `off_level` with no numbers.
