@@ -179,6 +179,18 @@ Function lax_component_zero(int s) {
   };
 }
 
+/// Root k of roots(x0), followed to nearby states as the root of roots(x) nearest to it.
+template <class Roots>
+Function tracked_root(Roots roots, int k, const State& x0) {
+  const Complex reference = roots(x0)[k];
+  return [roots, reference](const State& x) {
+    const Eigen::Vector3cd r = roots(x);
+    Eigen::Index best = 0;
+    (r.array() - reference).abs().minCoeff(&best);
+    return r[best];
+  };
+}
+
 /// Candidate: the zeros on the elliptic curve v² = P(u) of α(u)·X(u), α_i = √(e_j − e_k) w_i the
 /// isotropic normalisation (Σ α_i² = 0 for every u) that is covariant under the sign changes of
 /// the w_i: A u + B + √λ C v = 0 with A = Σ c_i m_i, B = −Σ c_i e_i m_i, C = Σ c_i γ_i,
@@ -207,13 +219,7 @@ Function lax_isotropic_zero(int k, const State& x0) {
     companion(2, 2) = -a2;
     return Eigen::ComplexEigenSolver<Eigen::Matrix3cd>(companion, false).eigenvalues().eval();
   };
-  const Complex reference = roots(x0)[k];
-  return [roots, reference](const State& x) {
-    const Eigen::Vector3cd r = roots(x);
-    Eigen::Index best = 0;
-    (r.array() - reference).abs().minCoeff(&best);
-    return r[best];
-  };
+  return tracked_root(roots, k, x0);
 }
 
 /// Candidate: the poles of the eigenvector ψ of the Lax vector (X × ψ = iξψ, ψ·ψ = 0) normalised
@@ -258,13 +264,7 @@ Function lax_dynamical_pole(int k, const State& x0) {
     }
     return r;
   };
-  const Complex reference = roots(x0)[k];
-  return [roots, reference](const State& x) {
-    const Eigen::Vector3cd r = roots(x);
-    Eigen::Index best = 0;
-    (r.array() - reference).abs().minCoeff(&best);
-    return r[best];
-  };
+  return tracked_root(roots, k, x0);
 }
 
 TEST(BrunSeparability, SphereConicCoordinatesPassOnZeroLevelAndFailOnOthers) {
