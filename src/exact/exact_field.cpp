@@ -124,6 +124,21 @@ Mat3 moment_jacobian(const Body& /*body*/, const ExactField& f, const Vec3& gamm
   return -f.mu * (f.R * (f.axes.transpose() * J * f.axes));
 }
 
+MomentAndDerivative moment_with_derivative(const Body& /*body*/, const ExactField& f,
+                                           const Vec3& gamma, const Vec3& delta) {
+  const Vec3 x = centre(f, gamma), u = f.axes * delta;
+  MomentAndDerivative a;
+  if (f.far_moments) {
+    a = {multipole_attraction(*f.far_moments, f.far_order, x).moment,
+         multipole_gravity_gradient(*f.far_moments, f.far_order, x).moment_jacobian * u};
+  } else {
+    a = moment_with_derivative(*f.mass_model, x, u, f.threads);
+  }
+  // x = −RPγ: ∂x/∂γ = −RP.
+  return {f.mu * (f.axes.transpose() * a.moment),
+          -f.mu * (f.R * (f.axes.transpose() * a.derivative))};
+}
+
 Body body_of(const MassModel& model, const Vec3& gyrostat) {
   const MassProperties mp = mass_properties(model);
   return Body::from_tensor(mp.inertia_tensor, mp.mass, mp.center_of_mass, gyrostat);

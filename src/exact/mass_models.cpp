@@ -99,4 +99,10 @@ GravityGradient gravity_gradient(const MassModel& m, const Vec3& x, int threads)
   return std::visit(Visitor{x, threads}, m);
 }
 
+MomentAndDerivative moment_with_derivative(const MassModel& m, const Vec3& x, const Vec3& u,
+                                           int threads) {
+  if (const auto* p = std::get_if<PointMasses>(&m)) return moment_with_derivative(*p, x, u);
+  return {attraction(m, x, threads).moment, gravity_gradient(m, x, threads).moment_jacobian * u};
+}
+
 }  // namespace newtop

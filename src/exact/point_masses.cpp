@@ -112,4 +112,25 @@ GravityGradient gravity_gradient(const PointMasses& p, const Vec3& x) {
   return g;
 }
 
+MomentAndDerivative moment_with_derivative(const PointMasses& p, const Vec3& x, const Vec3& u) {
+  const double s = x.norm();
+  if (s == 0.0) return {Vec3::Zero(), attraction(p, x).gradient.cross(u)};  // Jm = [∇Φ]× at O
+  const Vec3 xs = x / s;
+  Vec3 dip3 = Vec3::Zero(), dip5 = Vec3::Zero(), q = Vec3::Zero();
+  for (std::size_t i = 0; i < p.masses().size(); ++i) {
+    const double m = p.masses()[i];
+    const Vec3 rho = p.positions()[i] / s;
+    const detail::InversePowers w = detail::inverse_powers(rho.squaredNorm() - 2.0 * xs.dot(rho));
+    dip3 += (m * w.minus_1_3) * rho;
+    dip5 += (m * w.minus_1_5) * rho;
+    q += (m * w.inv_w5 * rho.dot(u)) * rho;
+  }
+  const Vec3 D = p.first_moment() / s;
+  MomentAndDerivative r;
+  r.moment = (D + dip3).cross(xs) / s;
+  r.derivative =
+      ((D + dip3).cross(u) - 3.0 * xs.dot(u) * (D + dip5).cross(xs) + 3.0 * q.cross(xs)) / s / s;
+  return r;
+}
+
 }  // namespace newtop

@@ -60,6 +60,32 @@ TEST(Hessian, AgainstHighPrecisionFromNearToFar) {
   }
 }
 
+// The moment and its derivative along δ in one call (a kick with one tangent vector): the moment
+// bit for bit as moment(), the derivative against the high-precision Jacobian applied to δ, with the
+// Jacobian's tolerances relative to |∂L/∂γ| |δ|.
+TEST(Hessian, MomentWithDerivativeAlongOneVector) {
+  const double mu = 3.7;
+  const Vec3 deltas[] = {Vec3(1.0, 0.0, 0.0), Vec3(-0.2, 0.7, 0.4), kGamma, Vec3(1e-3, 2.0, -5.0)};
+  for (const test::Case& c : test::cases()) {
+    const double r = max_radius(*c.model);
+    const Body body = body_of(*c.model);
+    for (double q : {1.5, 4.0, 1e2, 1e5, 1e8}) {
+      const double R = q * r;
+      const ExactField f = ExactField::make(c.model, mu, R);
+      const test::Values ref = c.reference(mu, R, kGamma);
+      const bool closed = !f.far_moments && !std::holds_alternative<PointMasses>(*c.model);
+      for (const Vec3& d : deltas) {
+        const MomentAndDerivative L = moment_with_derivative(body, f, kGamma, d);
+        EXPECT_EQ(L.moment, moment(body, f, kGamma)) << c.name << " R/r = " << q;
+        const Vec3 err = L.derivative - ref.moment_jacobian * d;
+        const double tol = closed ? near_tol(q) * (ref.grad_gamma.norm() + ref.hessian.norm())
+                                  : kFarJacobianTol * ref.moment_jacobian.norm();
+        EXPECT_LE(err.norm(), tol * d.norm()) << c.name << " R/r = " << q << " delta " << d.x();
+      }
+    }
+  }
+}
+
 /// Central differences of f at γ with step h, column by column.
 template <class F>
 Mat3 central_difference(F&& f, const Vec3& gamma, double h) {

@@ -19,6 +19,13 @@ class InputError : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+/// A moment about O and its derivative along one direction (the kick of one tangent vector needs
+/// both, and a mass model can form them in one pass).
+struct MomentAndDerivative {
+  Vec3 moment = Vec3::Zero();
+  Vec3 derivative = Vec3::Zero();
+};
+
 /// Formats a number with enough digits to round-trip (17 significant digits, shortest form); −0 is
 /// written as 0 (the sign of a zero carries no information in any of newtop's outputs).
 std::string format_number(double x);

@@ -90,6 +90,10 @@ Mat3 hessian_gamma(const Body& body, const ExactField& field, const Vec3& gamma)
 /// formed without the monopole's cancellation (its contribution is exactly zero) for point masses
 /// and the far-field series; from the closed forms near a polyhedron or an ellipsoid.
 Mat3 moment_jacobian(const Body& body, const ExactField& field, const Vec3& gamma);
+/// L and (∂L/∂γ) δ together (a kick with one tangent vector): one pass over point masses, L bit for
+/// bit as moment(body, field, γ); the other models by their moment and Jacobian.
+MomentAndDerivative moment_with_derivative(const Body& body, const ExactField& field,
+                                           const Vec3& gamma, const Vec3& delta);
 
 /// The body (principal moments, mass, centre of mass; principal axes reported) of a mass model:
 /// its mass properties diagonalised by Body::from_tensor.

@@ -78,6 +78,11 @@ Attraction attraction(const PointMasses& p, const Vec3& x);
 /// ∇∇Φ = Σ m (3 (x − ρ)(x − ρ)ᵀ/d⁵ − 1/d³) and the moment's Jacobian
 /// [Σ m ρ/d³]× − 3 Σ m (ρ × x)(x − ρ)ᵀ/d⁵, with the sums Σ m ρ/dⁿ split as for the moment.
 GravityGradient gravity_gradient(const PointMasses& p, const Vec3& x);
+/// The moment ∇Φ × x (bit for bit as attraction(p, x)) and its derivative along u, the moment's
+/// Jacobian of gravity_gradient applied to u, in one pass: with ρ̃ = ρ/s, x̂ = x/s and
+/// q = Σ m ρ̃ (ρ̃·u)/w⁵, (D + Σ m ρ̃ (w⁻³ − 1)) × u − 3 ((D + Σ m ρ̃ (w⁻⁵ − 1)) × x̂)(x̂·u) + 3 q × x̂,
+/// over s².
+MomentAndDerivative moment_with_derivative(const PointMasses& p, const Vec3& x, const Vec3& u);
 
 /// Exterior and interior potential of a homogeneous ellipsoid in Carlson's symmetric elliptic
 /// integrals R_F, R_D (Boost.Math): with u = x − centre, q_i = a_i² + λ (λ the confocal parameter,
@@ -93,5 +98,8 @@ GravityGradient gravity_gradient(const Ellipsoid& e, const Vec3& x);
 /// Dispatches on the model; a polyhedron is evaluated by attraction(Polyhedron, x, threads).
 Attraction attraction(const MassModel& m, const Vec3& x, int threads = 1);
 GravityGradient gravity_gradient(const MassModel& m, const Vec3& x, int threads = 1);
+/// Point masses in one pass; the other models by attraction and gravity_gradient.
+MomentAndDerivative moment_with_derivative(const MassModel& m, const Vec3& x, const Vec3& u,
+                                           int threads = 1);
 
 }  // namespace newtop

@@ -84,6 +84,20 @@ Vec3 moment_derivative(const BasicModel<F>& model, const Vec3& gamma, const Vec3
   }
 }
 
+/// A field that forms L(γ) and (∂L/∂γ) δ in one pass, moment_with_derivative(body, field, γ, δ)
+/// (point masses).
+template <class F>
+concept FieldWithMomentDerivative = Field<F> &&
+    requires(const Body& b, const F& f, const Vec3& g, const Vec3& d) {
+  { moment_with_derivative(b, f, g, d) } -> std::convertible_to<MomentAndDerivative>;
+};
+
+/// L(γ) and (∂L/∂γ) δ together: the field's own pass where it has one, moment and
+/// moment_derivative otherwise.
+template <Field F>
+MomentAndDerivative moment_with_derivative(const BasicModel<F>& model, const Vec3& gamma,
+                                           const Vec3& delta);
+
 /// A field with its own moment(body, field, γ) (found by ADL): one formed without the
 /// cancellation of γ × ∂V/∂γ, whose normal part can exceed the moment by (R/r)² far from the body
 /// (newtop/exact/exact_field.hpp).
@@ -100,6 +114,16 @@ Vec3 moment(const BasicModel<F>& model, const Vec3& gamma) {
     return moment(model.body, model.field, gamma);
   } else {
     return gamma.cross(grad_gamma(model.body, model.field, gamma));
+  }
+}
+
+template <Field F>
+MomentAndDerivative moment_with_derivative(const BasicModel<F>& model, const Vec3& gamma,
+                                           const Vec3& delta) {
+  if constexpr (requires { moment_with_derivative(model.body, model.field, gamma, delta); }) {
+    return moment_with_derivative(model.body, model.field, gamma, delta);
+  } else {
+    return {moment(model, gamma), moment_derivative(model, gamma, delta)};
   }
 }
 

@@ -55,11 +55,13 @@ void axis_flow_tangent(const Body& body, int a, double t, State& x, Tangent& V);
 template <Field F>
 void kick_tangent(const BasicModel<F>& model, double t, State& x, Tangent& V) {
   if (V.cols() == 1) {
-    V.col(0).head<3>() += t * moment_derivative(model, x.gamma, V.col(0).tail<3>());
-  } else {
-    const Mat3 J = moment_jacobian(model, x.gamma);
-    V.topRows<3>() += t * (J * V.bottomRows<3>());
+    const MomentAndDerivative L = moment_with_derivative(model, x.gamma, V.col(0).tail<3>());
+    V.col(0).head<3>() += t * L.derivative;
+    x.m += t * L.moment;
+    return;
   }
+  const Mat3 J = moment_jacobian(model, x.gamma);
+  V.topRows<3>() += t * (J * V.bottomRows<3>());
   x.m += t * moment(model, x.gamma);
 }
 
@@ -125,14 +127,22 @@ class TangentRk4Stepper {
   template <Field F, class W>
   static void f(const BasicModel<F>& model, const State& y, const W& w, State& dy, W& dw) {
     const Vec3 om = omega(model.body, y);
-    dy = State{y.m.cross(om) + moment(model, y.gamma), y.gamma.cross(om)};
     if constexpr (W::ColsAtCompileTime == 1) {
       const Vec3 dm = w.template head<3>(), dg = w.template tail<3>();
       const Vec3 d_omega = dm.cwiseQuotient(model.body.inertia());
-      dw.template head<3>() =
-          y.m.cross(d_omega) + dm.cross(om) + moment_derivative(model, y.gamma, dg);
+      Vec3 dL;
+      if constexpr (FieldWithMomentDerivative<F>) {  // one pass over the masses
+        const MomentAndDerivative L = moment_with_derivative(model.body, model.field, y.gamma, dg);
+        dy = State{y.m.cross(om) + L.moment, y.gamma.cross(om)};
+        dL = L.derivative;
+      } else {
+        dy = State{y.m.cross(om) + moment(model, y.gamma), y.gamma.cross(om)};
+        dL = moment_derivative(model, y.gamma, dg);
+      }
+      dw.template head<3>() = y.m.cross(d_omega) + dm.cross(om) + dL;
       dw.template tail<3>() = y.gamma.cross(d_omega) + dg.cross(om);
     } else if constexpr (W::ColsAtCompileTime != Eigen::Dynamic) {
+      dy = State{y.m.cross(om) + moment(model, y.gamma), y.gamma.cross(om)};
       const Mat3 Jm = moment_jacobian(model, y.gamma);
       const Vec3 inv_i = model.body.inertia().cwiseInverse();
       for (int c = 0; c < W::ColsAtCompileTime; ++c) {
@@ -142,6 +152,7 @@ class TangentRk4Stepper {
         dw.col(c).template tail<3>() = y.gamma.cross(d_omega) + dg.cross(om);
       }
     } else {
+      dy = State{y.m.cross(om) + moment(model, y.gamma), y.gamma.cross(om)};
       dw.noalias() = rhs_jacobian(model, y) * w;
     }
   }
