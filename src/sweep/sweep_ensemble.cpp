@@ -22,29 +22,33 @@ bool wants(const SweepFile& s, const char* q) {
   return std::find(s.quantities.begin(), s.quantities.end(), q) != s.quantities.end();
 }
 
-/// What the points of a group share: the run's settings as evaluate_point resolves them.
+/// What the points of a group share: the run's settings as evaluate_point resolves them (the model
+/// is the point's own: the ensemble holds a model per lane).
 struct RunKey {
-  QuadraticModel model;
   MethodSettings method;
   SplitOrdering ordering;  // method.ordering or the table's default
   double t0 = 0, t1 = 0;
   std::int64_t max_steps = 0;
 };
 
-bool same_run(const RunKey& a, const RunKey& b) {
-  const Body &x = a.model.body, &y = b.model.body;
-  const SplitOrdering &p = a.ordering, &q = b.ordering;
+bool same_model(const QuadraticModel& a, const QuadraticModel& b) {
+  const Body &x = a.body, &y = b.body;
   return x.inertia() == y.inertia() && x.mass() == y.mass() &&
          x.center_of_mass() == y.center_of_mass() && x.gyrostat() == y.gyrostat() &&
-         a.model.field.g == b.model.field.g && a.model.field.lambda_ == b.model.field.lambda_ &&
-         a.method.name == b.method.name && a.method.step == b.method.step && p.axes == q.axes &&
+         a.field.g == b.field.g && a.field.lambda_ == b.field.lambda_;
+}
+
+bool same_run(const RunKey& a, const RunKey& b) {
+  const SplitOrdering &p = a.ordering, &q = b.ordering;
+  return a.method.name == b.method.name && a.method.step == b.method.step && p.axes == q.axes &&
          p.kick_outside == q.kick_outside && p.by_moment == q.by_moment &&
          p.free_body == q.free_body && a.t0 == b.t0 && a.t1 == b.t1 && a.max_steps == b.max_steps;
 }
 
 struct Member {
-  std::size_t slot;  // position in `indices`
-  Model model;       // the point's own (for its integrals and ω)
+  std::size_t slot;          // position in `indices`
+  Model model;               // the point's own (for its integrals and ω)
+  QuadraticModel quadratic;  // the same, for the stepper
   State initial;
 };
 
@@ -60,11 +64,8 @@ std::optional<RunKey> run_key(const SweepFile& s, const io::Scenario& sc) {
   if (sc.model.kind() != FieldKind::quadratic || !is_finite(sc.initial)) return std::nullopt;
   const MethodSettings method = io::resolve_method(sc, s.integrate);
   if (method_info(method.name).kind != MethodKind::splitting) return std::nullopt;
-  return RunKey{sc.model.quadratic(),
-                method,
-                method.ordering.value_or(default_ordering(composition_table(method.name))),
-                sc.integrate.t0,
-                io::resolve_t_end(sc, s.integrate),
+  return RunKey{method, method.ordering.value_or(default_ordering(composition_table(method.name))),
+                sc.integrate.t0, io::resolve_t_end(sc, s.integrate),
                 sc.integrate.max_steps.value_or(IntegrateOptions{}.max_steps)};
 }
 
@@ -100,10 +101,19 @@ void run_group(const SweepFile& s, const Group& g, std::vector<std::optional<Poi
 
   EnsembleState x;
   std::vector<IntegralValues> i0;
+  std::vector<QuadraticModel> models;
   for (const Member& p : g.members) {
     x.push_back(p.initial);
     i0.push_back(integrals(p.model, p.initial));
+    models.push_back(p.quadratic);
   }
+  // One model for all: its constants splatted; several (a sweep over the body or the field): a
+  // model per lane. Either way each point's run is the scalar stepper's on its own model.
+  const bool one_model = std::all_of(models.begin(), models.end(), [&](const QuadraticModel& m) {
+    return same_model(m, models.front());
+  });
+  const std::optional<EnsembleModels> lanes =
+      one_model ? std::nullopt : std::optional<EnsembleModels>(std::in_place, models, k.ordering);
   const std::size_t size = g.members.size();
   std::vector<Drift> drift(size);
   std::vector<bool> alive(size, true);
@@ -116,7 +126,11 @@ void run_group(const SweepFile& s, const Group& g, std::vector<std::optional<Poi
   const double h = n > 0 ? (k.t1 - k.t0) / static_cast<double>(n) : 0.0;
   for (std::int64_t done = 0; done < run;) {
     const std::int64_t steps = std::min(chunk, run - done);
-    stepper.advance(k.model, x, h, steps);
+    if (lanes) {
+      stepper.advance(*lanes, x, h, steps);
+    } else {
+      stepper.advance(models.front(), x, h, steps);
+    }
     done += steps;
     for (std::size_t j = 0; j < size; ++j) {
       if (!alive[j]) continue;
@@ -162,7 +176,7 @@ std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std
         auto g = std::find_if(groups.begin(), groups.end(),
                               [&](const Group& x) { return same_run(x.key, *key); });
         if (g == groups.end()) g = groups.insert(groups.end(), Group{*key, {}});
-        g->members.push_back(Member{slot, sc.model, sc.initial});
+        g->members.push_back(Member{slot, sc.model, sc.model.quadratic(), sc.initial});
       } catch (const std::exception&) {  // evaluate_point_safely reports it
       }
     }
