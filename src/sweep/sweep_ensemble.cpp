@@ -164,7 +164,7 @@ bool ensemble_sweep(const SweepFile& s) {
 }
 
 std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std::size_t> indices,
-                                         std::size_t* in_ensemble) {
+                                         std::size_t* in_ensemble, std::size_t* runs) {
   std::vector<std::optional<PointResult>> out(indices.size());
   std::vector<Group> groups;
   if (ensemble_sweep(s)) {
@@ -181,6 +181,7 @@ std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std
       }
     }
   }
+  if (runs) *runs = groups.size();
   for (const Group& g : groups) {
     try {
       run_group(s, g, out);

@@ -1,12 +1,12 @@
 #pragma once
 /// \file
 /// Sweeps through the ensemble stepper (newtop/integrate/ensemble.hpp): the points of a sweep
-/// whose quantities are trajectory results only (final_state, drift) and whose runs share a model
-/// of the quadratic field, a splitting method and its step, the times and the step limit are
-/// advanced together, in SIMD lanes. Each point's result is bit-identical to evaluate_point's (the
-/// ensemble stepper reproduces the scalar stepper bit for bit and the run follows the fixed-step
-/// driver), so a sweep's output does not depend on which points were grouped, nor on the threads
-/// or ranks.
+/// whose quantities are trajectory results only (final_state, drift) and whose runs share a
+/// splitting method and its step, the times and the step limit, in a quadratic field (each point
+/// with its own model, held per lane), are advanced together, in SIMD lanes. Each point's result is
+/// bit-identical to evaluate_point's (the ensemble stepper reproduces the scalar stepper bit for
+/// bit and the run follows the fixed-step driver), so a sweep's output does not depend on which
+/// points were grouped, nor on the threads or ranks.
 
 #include <cstddef>
 #include <span>
@@ -21,11 +21,14 @@ namespace newtop::sweep {
 bool ensemble_sweep(const SweepFile& s);
 
 /// The results of the points `indices`, in that order, each bit-identical to
-/// evaluate_point_safely(s, index): the points that share their run's settings (model of the
-/// quadratic field, splitting method, step, t0, t_end, max_steps) with a finite initial state are
-/// advanced together by the ensemble stepper; any other by evaluate_point_safely. `in_ensemble`,
-/// when given, receives the number of points the ensemble stepper advanced.
+/// evaluate_point_safely(s, index): the points of the quadratic field with a finite initial state
+/// that share their run's settings (splitting method, step, t0, t_end, max_steps) are advanced
+/// together by the ensemble stepper, each on its own model (one model for all when they agree, a
+/// model per lane otherwise: a sweep over the body's or the field's numbers); any other point by
+/// evaluate_point_safely. `in_ensemble`, when given, receives the number of points the ensemble
+/// stepper advanced, and `runs` the number of ensemble runs (groups of shared settings).
 std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std::size_t> indices,
-                                         std::size_t* in_ensemble = nullptr);
+                                         std::size_t* in_ensemble = nullptr,
+                                         std::size_t* runs = nullptr);
 
 }  // namespace newtop::sweep
