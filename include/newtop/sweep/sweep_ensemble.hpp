@@ -31,4 +31,14 @@ std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std
                                          std::size_t* in_ensemble = nullptr,
                                          std::size_t* runs = nullptr);
 
+/// The number of points a worker (a thread of run_sweep, a rank under MPI) takes at once, of
+/// `count` points left for `workers` workers: one for a sweep evaluated point by point (dynamic
+/// balancing point by point); for an ensemble sweep an equal share, within [64, 256] (a batch fills
+/// some blocks of SIMD lanes, and leaves several batches per worker on large sweeps).
+std::size_t batch_size(const SweepFile& s, std::size_t count, int workers);
+
+/// The results of a batch of points, in order: evaluate_points for an ensemble sweep,
+/// evaluate_point_safely point by point otherwise (each bit-identical to evaluate_point_safely).
+std::vector<PointResult> evaluate_batch(const SweepFile& s, std::span<const std::size_t> indices);
+
 }  // namespace newtop::sweep
