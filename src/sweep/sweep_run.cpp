@@ -9,6 +9,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "newtop/integrate/ensemble.hpp"
 #include "newtop/sweep/sweep.hpp"
 #include "newtop/sweep/sweep_ensemble.hpp"
 
@@ -173,8 +174,10 @@ std::optional<std::pair<std::size_t, PointResult>> decode_result(const std::stri
 
 std::size_t batch_size(const SweepFile& s, std::size_t count, int workers) {
   if (!ensemble_sweep(s)) return 1;
-  const std::size_t w = static_cast<std::size_t>(std::max(workers, 1));
-  return std::clamp<std::size_t>((count + w - 1) / w, 64, 256);
+  const std::size_t shares = 4 * static_cast<std::size_t>(std::max(workers, 1));
+  const std::size_t block = simd_block(best_simd_path());
+  const std::size_t share = std::clamp<std::size_t>((count + shares - 1) / shares, 1, 256);
+  return (share + block - 1) / block * block;
 }
 
 std::vector<PointResult> evaluate_batch(const SweepFile& s, std::span<const std::size_t> indices) {

@@ -33,8 +33,9 @@ std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std
 
 /// The number of points a worker (a thread of run_sweep, a rank under MPI) takes at once, of
 /// `count` points left for `workers` workers: one for a sweep evaluated point by point (dynamic
-/// balancing point by point); for an ensemble sweep an equal share, within [64, 256] (a batch fills
-/// some blocks of SIMD lanes, and leaves several batches per worker on large sweeps).
+/// balancing point by point); for an ensemble sweep a quarter of an equal share (about four
+/// batches per worker, to balance points of different cost), at most 256, rounded up to whole
+/// blocks of the SIMD kernel (a block costs about the same whether its lanes are full or not).
 std::size_t batch_size(const SweepFile& s, std::size_t count, int workers);
 
 /// The results of a batch of points, in order: evaluate_points for an ensemble sweep,
