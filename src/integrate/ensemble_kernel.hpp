@@ -19,7 +19,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <type_traits>
 
 namespace newtop {
 class Body;
@@ -89,6 +88,11 @@ void ensemble_run_avx512(const EnsembleTask& task);
 std::size_t ensemble_block_avx512();
 #endif
 
+}  // namespace newtop::detail
+
+#include "ensemble_kernel_models.hpp"
+
+namespace newtop::detail {
 namespace ensemble_simd {
 namespace {
 
@@ -109,48 +113,6 @@ struct Block {
   static constexpr int W = int(sizeof(V) / sizeof(double));
   V m[3][B];
   V g[3][B];
-};
-
-// The constants of one model shared by every lane: the stage's numbers, splatted.
-template <class Isa>
-struct SharedModel {
-  using V = typename Isa::V;
-  const EnsembleTask& k;
-  NEWTOP_AI V ta(const EnsembleStage& st, int, int) const { return Isa::splat(st.a); }
-  NEWTOP_AI V tb(const EnsembleStage& st, int, int) const { return Isa::splat(st.b); }
-  NEWTOP_AI V tau(const EnsembleStage& st, int) const { return Isa::splat(st.a); }
-  NEWTOP_AI V grad0(int w, int) const { return Isa::splat(k.grad0[w]); }
-  NEWTOP_AI V lambda(int) const { return Isa::splat(k.lambda); }
-  NEWTOP_AI V inertia(int w, int) const { return Isa::splat(k.inertia[w]); }
-  const Body& body(int, int) const { return *k.body; }
-};
-
-// A model per lane: the block's constants loaded from the task's arrays (`first`: the block's first
-// point), the stage's times multiplied by them as the scalar flows multiply (t2 * f.rate[w]).
-template <class Isa>
-struct LaneModels {
-  using V = typename Isa::V;
-  static constexpr int W = int(sizeof(V) / sizeof(double));
-  const EnsembleTask& k;
-  std::size_t first;
-  NEWTOP_AI V load(int c, int b) const {
-    V v;
-    __builtin_memcpy(&v, k.lane[c] + first + std::size_t(b * W), sizeof(V));
-    return v;
-  }
-  NEWTOP_AI V ta(const EnsembleStage& st, int I, int b) const {
-    return st.fixed ? Isa::splat(st.a) : Isa::splat(st.a) * load(kLaneRate + I, b);
-  }
-  NEWTOP_AI V tb(const EnsembleStage& st, int I, int b) const {
-    return Isa::splat(st.b) * load(kLaneKOverI + I, b);
-  }
-  NEWTOP_AI V tau(const EnsembleStage& st, int b) const {
-    return Isa::splat(st.a) * load(kLaneInvRef, b);
-  }
-  NEWTOP_AI V grad0(int w, int b) const { return load(kLaneGrad0 + w, b); }
-  NEWTOP_AI V lambda(int b) const { return load(kLaneLambda, b); }
-  NEWTOP_AI V inertia(int w, int b) const { return load(kLaneInertia + w, b); }
-  const Body& body(int b, int l) const { return *k.bodies[first + std::size_t(b * W + l)]; }
 };
 
 // Kick over t: ∂V/∂γ = grad0 + λ Iγ, L = γ × ∂V/∂γ, m += t L (kick in splitting.hpp, in the
@@ -267,16 +229,6 @@ void exact(Block<Isa>& z, const M& c, double t) {
   }
 }
 
-template <class Isa, template <class> class M>
-NEWTOP_AI M<Isa> make_model(const EnsembleTask& k, std::size_t first) {
-  if constexpr (std::is_same_v<M<Isa>, SharedModel<Isa>>) {
-    (void)first;
-    return M<Isa>{k};
-  } else {
-    return M<Isa>{k, first};
-  }
-}
-
 /// Advances every block of the task by task.steps steps, with the model M (SharedModel or
 /// LaneModels).
 template <class Isa, template <class> class M>
@@ -286,7 +238,7 @@ void run_model_blocks(const EnsembleTask& k) {
   constexpr std::size_t points = std::size_t(W) * B;
   for (std::size_t first = 0; first < k.n; first += points) {
     Block<Isa> z;
-    const M<Isa> c = make_model<Isa, M>(k, first);
+    const M<Isa> c{k, first};
     for (int w = 0; w < 3; ++w) {
       for (int b = 0; b < B; ++b) {
         __builtin_memcpy(&z.m[w][b], k.m[w] + first + std::size_t(b * W), sizeof(V));
