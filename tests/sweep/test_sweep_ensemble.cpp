@@ -143,4 +143,21 @@ TEST(SweepEnsemble, PointsOverModelParametersInOneRun) {
   EXPECT_NE(a.values[1], b.values[1]);
 }
 
+// Points whose runs all differ (a sweep over the step) run one by one: a block of lanes for one
+// point would cost more than its scalar run. The results are the same bits either way.
+TEST(SweepEnsemble, PointsAloneInTheirRunRunOneByOne) {
+  const SweepFile s = newtop::sweep::load_sweep(
+      write_file("steps.toml", heavy_top_sweep("\"final_state\"",
+                                               "[[axes]]\nkey = \"integrate.step\"\n"
+                                               "values = [1e-3, 2e-3, 4e-3]\n")));
+  // 150 points of three steps; then the steps alone.
+  expect_point_by_point(s, 3);
+  std::vector<std::size_t> alone = {0, 1, 2};
+  std::size_t in_ensemble = 1, runs = 1;
+  const std::vector<PointResult> r = newtop::sweep::evaluate_points(s, alone, &in_ensemble, &runs);
+  EXPECT_EQ(in_ensemble, 0u);
+  EXPECT_EQ(runs, 0u);
+  for (std::size_t i : alone) expect_same(r[i], newtop::sweep::evaluate_point_safely(s, i), i);
+}
+
 }  // namespace

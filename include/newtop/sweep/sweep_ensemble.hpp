@@ -22,11 +22,12 @@ bool ensemble_sweep(const SweepFile& s);
 
 /// The results of the points `indices`, in that order, each bit-identical to
 /// evaluate_point_safely(s, index): the points of the quadratic field with a finite initial state
-/// that share their run's settings (splitting method, step, t0, t_end, max_steps) are advanced
-/// together by the ensemble stepper, each on its own model (one model for all when they agree, a
-/// model per lane otherwise: a sweep over the body's or the field's numbers); any other point by
-/// evaluate_point_safely. `in_ensemble`, when given, receives the number of points the ensemble
-/// stepper advanced, and `runs` the number of ensemble runs (groups of shared settings).
+/// that share their run's settings (splitting method, step, t0, t_end, max_steps), four or more,
+/// are advanced together by the ensemble stepper, each on its own model (one model for all when
+/// they agree, a model per lane otherwise: a sweep over the body's or the field's numbers); any
+/// other point by evaluate_point_safely. `in_ensemble`, when given, receives the number of points
+/// the ensemble stepper advanced, and `runs` the number of ensemble runs (groups of shared
+/// settings).
 std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std::size_t> indices,
                                          std::size_t* in_ensemble = nullptr,
                                          std::size_t* runs = nullptr);
