@@ -14,6 +14,9 @@
 #include "newtop/integrate/ensemble.hpp"
 #include "newtop/integrate/method_settings.hpp"
 #include "newtop/model/integrals.hpp"
+#include "newtop/phase/chaos.hpp"
+#include "newtop/phase/ensemble_tangent.hpp"
+#include "newtop/phase/tangent_vectors.hpp"
 
 namespace newtop::sweep {
 namespace {
@@ -23,6 +26,15 @@ constexpr std::size_t kSmallestGroup = 4;
 bool wants(const SweepFile& s, const char* q) {
   return std::find(s.quantities.begin(), s.quantities.end(), q) != s.quantities.end();
 }
+
+bool only(const SweepFile& s, const char* a, const char* b) {
+  return !s.quantities.empty() &&
+         std::all_of(s.quantities.begin(), s.quantities.end(),
+                     [&](const std::string& q) { return q == a || q == b; });
+}
+
+/// megno and lyapunov_max only: the tangent run of newtop chaos (one tangent vector).
+bool tangent_sweep(const SweepFile& s) { return only(s, "megno", "lyapunov_max"); }
 
 /// What the points of a group share: the run's settings as evaluate_point resolves them (the model
 /// is the point's own: the ensemble holds a model per lane).
@@ -157,12 +169,65 @@ void run_group(const SweepFile& s, const Group& g, std::vector<std::optional<Poi
   }
 }
 
+/// A group of one model through the ensemble tangent stepper with one tangent vector per point,
+/// as chaos_run (phase/chaos_run.hpp, integrate_tangent) runs each point: n equal steps, the step
+/// limit before each step, a non-finite state or tangent ending the point's run, the indicators
+/// observed (and the tangent renormalised) after every step. With one tangent vector the ensemble
+/// tangent stepper reproduces TangentSplittingStepper bit for bit (its kick forms (∂L/∂γ) δγ
+/// exactly as moment_derivative does; test_sweep_ensemble checks every point against
+/// evaluate_point), so each point's result is evaluate_point's.
+void run_tangent_group(const SweepFile& s, const Group& g,
+                       std::vector<std::optional<PointResult>>& out) {
+  const RunKey& k = g.key;
+  MethodSettings method = k.method;
+  method.ordering = k.ordering;
+  phase::check_tangent_method(method);
+  IntegrateOptions options;
+  options.max_steps = k.max_steps;
+  options.step = method.step;
+  check_options(options);
+  const std::int64_t n = fixed_step_count(k.t0, k.t1, options.step);
+  phase::EnsembleTangentStepper stepper(composition_table(method.name), k.ordering);
+  EnsembleState x;
+  for (const Member& p : g.members) x.push_back(p.initial);
+  const std::size_t size = g.members.size();
+  std::vector<phase::Tangent> V(size, phase::initial_tangent(1));
+  std::vector<phase::ChaosIndicators> ind(size, phase::ChaosIndicators(k.t0, 1));
+  std::vector<bool> alive(size, true);
+  const QuadraticModel& model = g.members.front().quadratic;
+  const double h = n > 0 ? (k.t1 - k.t0) / static_cast<double>(n) : 0.0;
+  const std::int64_t run = std::min(n, k.max_steps);
+  for (std::int64_t i = 1; i <= run; ++i) {
+    stepper.advance(model, x, V, h, 1);
+    const double t = (i == n) ? k.t1 : k.t0 + static_cast<double>(i) * h;
+    for (std::size_t j = 0; j < size; ++j) {
+      if (!alive[j]) continue;
+      if (!is_finite(x[j]) || !V[j].allFinite()) {
+        alive[j] = false;
+        out[g.members[j].slot] = PointResult{std::string(to_string(Status::non_finite)), {}};
+      } else {
+        ind[j](t, V[j]);
+      }
+    }
+  }
+  for (std::size_t j = 0; j < size; ++j) {
+    if (!alive[j]) continue;
+    if (n > k.max_steps) {
+      out[g.members[j].slot] = PointResult{std::string(to_string(Status::step_limit)), {}};
+      continue;
+    }
+    const phase::ChaosSample c = ind[j].sample();
+    PointResult r{"ok", {}};
+    for (const std::string& q : s.quantities)
+      r.values.push_back(q == "megno" ? c.megno : c.lyapunov_max);
+    out[g.members[j].slot] = std::move(r);
+  }
+}
+
 }  // namespace
 
 bool ensemble_sweep(const SweepFile& s) {
-  return !s.quantities.empty() &&
-         std::all_of(s.quantities.begin(), s.quantities.end(),
-                     [](const std::string& q) { return q == "final_state" || q == "drift"; });
+  return only(s, "final_state", "drift") || tangent_sweep(s);
 }
 
 std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std::size_t> indices,
@@ -175,8 +240,12 @@ std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std
         const io::Scenario sc = point_scenario(s, indices[slot]);
         const std::optional<RunKey> key = run_key(s, sc);
         if (!key) continue;
-        auto g = std::find_if(groups.begin(), groups.end(),
-                              [&](const Group& x) { return same_run(x.key, *key); });
+        // The tangent stepper takes one model for all its points.
+        const bool tangent = tangent_sweep(s);
+        auto g = std::find_if(groups.begin(), groups.end(), [&](const Group& x) {
+          return same_run(x.key, *key) &&
+                 (!tangent || same_model(x.members.front().quadratic, sc.model.quadratic()));
+        });
         if (g == groups.end()) g = groups.insert(groups.end(), Group{*key, {}});
         g->members.push_back(Member{slot, sc.model, sc.model.quadratic(), sc.initial});
       } catch (const std::exception&) {  // evaluate_point_safely reports it
@@ -190,7 +259,11 @@ std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std
   if (runs) *runs = groups.size();
   for (const Group& g : groups) {
     try {
-      run_group(s, g, out);
+      if (tangent_sweep(s)) {
+        run_tangent_group(s, g, out);
+      } else {
+        run_group(s, g, out);
+      }
     } catch (const std::exception&) {  // the same error at every point: reported point by point
       for (const Member& p : g.members) out[p.slot].reset();
     }

@@ -160,4 +160,23 @@ TEST(SweepEnsemble, PointsAloneInTheirRunRunOneByOne) {
   for (std::size_t i : alone) expect_same(r[i], newtop::sweep::evaluate_point_safely(s, i), i);
 }
 
+// MEGNO and λ_max over initial conditions (the map of examples/sweep_megno.toml, shorter): one
+// ensemble tangent run, every point the bits of newtop chaos's run (evaluate_point).
+TEST(SweepEnsemble, MegnoMapIsEvaluatePointsBits) {
+  const std::string sweep =
+      "scenario = \"" + std::string(NEWTOP_SOURCE_DIR) +
+      "/examples/section_chaotic.toml\"\nquantities = [\"lyapunov_max\", \"megno\"]\n"
+      "[[axes]]\nkey = \"initial.omega[0]\"\nstart = -1.5\nstop = 1.5\ncount = 7\n"
+      "[[axes]]\nkey = \"initial.omega[1]\"\nstart = -1.5\nstop = 1.5\ncount = 7\n"
+      "[integrate]\nt_end = 40.0\n";
+  const SweepFile s = newtop::sweep::load_sweep(write_file("megno.toml", sweep));
+  expect_point_by_point(s);
+  // The map is not flat: the indicators differ between points.
+  const PointResult a = newtop::sweep::evaluate_point(s, 0),
+                    b = newtop::sweep::evaluate_point(s, 24);
+  ASSERT_EQ(a.status, "ok");
+  ASSERT_EQ(b.status, "ok");
+  EXPECT_NE(a.values[1], b.values[1]);
+}
+
 }  // namespace
