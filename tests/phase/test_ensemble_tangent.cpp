@@ -125,6 +125,39 @@ TEST(EnsembleTangent, StateBitIdenticalTangentToRoundOffWhereLanesLeaveTheSeries
   expect_scalar_agreement(0.1, 3.0);  // rotation angles up to ~0.6
 }
 
+// With one tangent vector (MEGNO, λ_max) the scalar kick forms (∂L/∂γ) δγ without the matrix
+// (moment_derivative: δγ × ∂V/∂γ + γ × λIδγ), the same products and sums as the ensemble's kick in
+// another order of commutative operations: the tangent vector is bit-identical too (the sweep's
+// MEGNO maps rely on it).
+TEST(EnsembleTangent, OneTangentVectorBitIdentical) {
+  if (kScalarMayContract) GTEST_SKIP() << "the scalar stepper may use fused multiply-adds here";
+  const QuadraticModel model = test::generic_model(Vec3(0.1, -0.2, 0.05));
+  const Points p0 = random_points(model, 37, 3.0, 1, 77);
+  for (const char* name : {"splitting2", "splitting4", "splitting6", "splitting8"}) {
+    const CompositionTable& table = composition_table(name);
+    for (bool outside : {false, true}) {
+      SplitOrdering o = default_ordering(table);
+      o.kick_outside = outside;
+      Points ref = p0;
+      for (std::size_t i = 0; i < ref.x.size(); ++i) {
+        TangentSplittingStepper s(table, o);
+        for (int k = 0; k < kSteps; ++k) s.step(model, ref.x[i], ref.V[i], 0.1);
+      }
+      for (SimdPath path : available_paths()) {
+        EnsembleTangentStepper e(table, o, path);
+        EnsembleState x(p0.x);
+        std::vector<Tangent> V = p0.V;
+        e.advance(model, x, V, 0.1, kSteps);
+        for (std::size_t i = 0; i < p0.x.size(); ++i) {
+          ASSERT_TRUE(same_bits(x[i], ref.x[i]) && same_bits(V[i], ref.V[i]))
+              << name << (outside ? " kick outside " : " kick inside ") << simd_path_name(path)
+              << " point " << i;
+        }
+      }
+    }
+  }
+}
+
 TEST(EnsembleTangent, IndependentOfLanesAndGrouping) {
   const QuadraticModel model = test::generic_model(Vec3(0.1, -0.2, 0.05));
   const Points p0 = random_points(model, 23, 2.5, 2, 5);

@@ -7,7 +7,9 @@
 /// Guarantee: each point's state is bit-identical to TangentSplittingStepper's, and so are its
 /// tangent vectors through the rotations; the kick forms (∂L/∂γ) δγ as γ × (λ I δγ) − (∂V/∂γ) × δγ
 /// instead of through the 3 × 3 matrix, so the tangent vectors agree with the scalar stepper's to
-/// round-off (tests/phase/test_ensemble_tangent.cpp bounds it). A point's results, state and
+/// round-off (tests/phase/test_ensemble_tangent.cpp bounds it); with one tangent vector the scalar
+/// kick forms it without the matrix too (moment_derivative), and the tangent vector is
+/// bit-identical as well (tested). A point's results, state and
 /// tangent vectors, do not depend on its lane, the ensemble's size or the instruction set (bit for
 /// bit).
 
