@@ -3,9 +3,11 @@
 /// Sweeps through the ensemble stepper (newtop/integrate/ensemble.hpp): the points of a sweep
 /// whose quantities are trajectory results only (final_state, drift) and whose runs share a
 /// splitting method and its step, the times and the step limit, in a quadratic field (each point
-/// with its own model, held per lane), are advanced together, in SIMD lanes. Each point's result is
-/// bit-identical to evaluate_point's (the ensemble stepper reproduces the scalar stepper bit for
-/// bit and the run follows the fixed-step driver), so a sweep's output does not depend on which
+/// with its own model, held per lane), are advanced together, in SIMD lanes; those of a sweep of
+/// megno and lyapunov_max only, sharing the model as well, through the ensemble tangent stepper
+/// (newtop/phase/ensemble_tangent.hpp) with one tangent vector each. Each point's result is
+/// bit-identical to evaluate_point's (the ensemble steppers reproduce the scalar steppers bit for
+/// bit and the runs follow the fixed-step drivers), so a sweep's output does not depend on which
 /// points were grouped, nor on the threads or ranks.
 
 #include <cstddef>
@@ -17,15 +19,16 @@
 namespace newtop::sweep {
 
 /// Whether run_sweep hands the sweep's points to evaluate_points in batches: every quantity is
-/// final_state or drift.
+/// final_state or drift, or every quantity is megno or lyapunov_max.
 bool ensemble_sweep(const SweepFile& s);
 
 /// The results of the points `indices`, in that order, each bit-identical to
 /// evaluate_point_safely(s, index): the points of the quadratic field with a finite initial state
 /// that share their run's settings (splitting method, step, t0, t_end, max_steps), four or more,
 /// are advanced together by the ensemble stepper, each on its own model (one model for all when
-/// they agree, a model per lane otherwise: a sweep over the body's or the field's numbers); any
-/// other point by evaluate_point_safely. `in_ensemble`, when given, receives the number of points
+/// they agree, a model per lane otherwise: a sweep over the body's or the field's numbers), or for
+/// megno and lyapunov_max by the ensemble tangent stepper (one model per run); any other point by
+/// evaluate_point_safely. `in_ensemble`, when given, receives the number of points
 /// the ensemble stepper advanced, and `runs` the number of ensemble runs (groups of shared
 /// settings).
 std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std::size_t> indices,
