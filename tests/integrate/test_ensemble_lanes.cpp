@@ -32,33 +32,6 @@ bool same_state(const State& a, const State& b) {
   return true;
 }
 
-// Random models of the quadratic field: moments in [0.5, 2.5] satisfying the triangle
-// inequalities (one in four with two moments equal: a tie in the sort by moment), any mass, r0,
-// field (g, λ) of either sign, and a gyrostatic moment whose components are zero or not at random
-// (so the spin split's reference axis has k ≠ 0 in some models and k = 0 in others). `gyrostat`
-// false: k = 0 (the near-integrable tables need it).
-std::vector<QuadraticModel> random_models(std::size_t n, bool gyrostat, unsigned seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<QuadraticModel> models;
-  while (models.size() < n) {
-    Vec3 I, r0, k = Vec3::Zero();
-    for (int i = 0; i < 3; ++i) I[i] = 0.5 + 2.0 * u(rng);
-    if (u(rng) < 0.25) I[1] = I[0];
-    if (I[0] + I[1] < I[2] || I[1] + I[2] < I[0] || I[0] + I[2] < I[1]) continue;
-    for (int i = 0; i < 3; ++i) r0[i] = u(rng) - 0.5;
-    for (int i = 0; i < 3; ++i) {
-      const double v = 0.6 * u(rng) - 0.3;
-      if (gyrostat && u(rng) < 0.5) k[i] = v;
-    }
-    const double mass = 0.5 + 1.5 * u(rng);
-    const double g = 4.0 * u(rng) - 2.0;
-    const double lambda = 2.0 * u(rng) - 1.0;
-    models.push_back({Body::from_principal(I, mass, r0, k), QuadraticField::coulomb(g, lambda)});
-  }
-  return models;
-}
-
 std::vector<State> random_states(const std::vector<QuadraticModel>& models, double w_max,
                                  unsigned seed) {
   std::mt19937_64 rng(seed);
@@ -108,7 +81,7 @@ constexpr int kSteps = 30;
 // Each point of the ensemble equals the scalar stepper's run on its own model.
 void expect_scalar_agreement(bool gyrostat, double h, double w_max) {
   if (kScalarMayContract) GTEST_SKIP() << "the scalar stepper may use fused multiply-adds here";
-  const std::vector<QuadraticModel> models = random_models(53, gyrostat, 2024);
+  const std::vector<QuadraticModel> models = test::random_models(53, gyrostat, 2024);
   const std::vector<State> x0 = random_states(models, w_max, 31);
   for (const Case& c : every_method(gyrostat)) {
     const CompositionTable& table = composition_table(c.table);
@@ -151,7 +124,7 @@ TEST(EnsembleLanes, BitIdenticalToScalarStepperWithoutGyrostat) {
 // A point's result depends only on its state and model: the same points reversed, each alone, and
 // every third one, against the whole ensemble, on every path.
 TEST(EnsembleLanes, IndependentOfGrouping) {
-  const std::vector<QuadraticModel> models = random_models(61, true, 99);
+  const std::vector<QuadraticModel> models = test::random_models(61, true, 99);
   const std::vector<State> x0 = random_states(models, 2.5, 5);
   const CompositionTable& table = composition_table("splitting6");
   const SplitOrdering o = default_ordering(table);
@@ -201,7 +174,7 @@ TEST(EnsembleLanes, OneModelPerLaneEqualsTheSharedModel) {
 }
 
 TEST(EnsembleLanes, RefusesModelsThatDoNotFit) {
-  const std::vector<QuadraticModel> models = random_models(5, true, 1);
+  const std::vector<QuadraticModel> models = test::random_models(5, true, 1);
   const CompositionTable& table = composition_table("splitting2");
   EnsembleStepper e(table);
   EnsembleState x(random_states(models, 1.0, 2));

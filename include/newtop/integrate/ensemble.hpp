@@ -26,6 +26,10 @@
 
 namespace newtop {
 
+namespace phase {
+class EnsembleTangentStepper;
+}
+
 /// The points of an ensemble in structure-of-arrays form, body frame: point i is
 /// m = (m[0][i], m[1][i], m[2][i]) and γ = (gamma[0][i], gamma[1][i], gamma[2][i]).
 struct EnsembleState {
@@ -75,6 +79,7 @@ class EnsembleModels {
 
  private:
   friend class EnsembleStepper;
+  friend class phase::EnsembleTangentStepper;
   struct Group {
     SplitFrame frame;                 // the group's axes, signs and gyrostat_ref
     std::vector<std::size_t> points;  // by position in the ensemble

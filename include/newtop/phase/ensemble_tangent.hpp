@@ -35,6 +35,11 @@ class EnsembleTangentStepper {
   /// x.size(), every V[i] with the same number of columns, 1 to 6; InputError otherwise).
   void advance(const QuadraticModel& model, EnsembleState& x, std::vector<Tangent>& V, double h,
                std::int64_t steps);
+  /// The same with a model per point (EnsembleModels prepared for the stepper's ordering; its
+  /// groups share the order of the axis rotations): point i on model i, with the guarantee above
+  /// on its own model.
+  void advance(const EnsembleModels& models, EnsembleState& x, std::vector<Tangent>& V, double h,
+               std::int64_t steps);
 
  private:
   int order_;
@@ -42,6 +47,7 @@ class EnsembleTangentStepper {
   SimdPath path_;
   std::vector<double> a_, b_;
   std::vector<double> workspace_;
+  std::vector<double> constants_;  // per lane, with a model per point
 };
 
 }  // namespace newtop::phase
