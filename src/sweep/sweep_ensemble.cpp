@@ -169,7 +169,8 @@ void run_group(const SweepFile& s, const Group& g, std::vector<std::optional<Poi
   }
 }
 
-/// A group of one model through the ensemble tangent stepper with one tangent vector per point,
+/// A group through the ensemble tangent stepper (a model per lane where the models differ) with one
+/// tangent vector per point,
 /// as chaos_run (phase/chaos_run.hpp, integrate_tangent) runs each point: n equal steps, the step
 /// limit before each step, a non-finite state or tangent ending the point's run, the indicators
 /// observed (and the tangent renormalised) after every step. With one tangent vector the ensemble
@@ -194,11 +195,21 @@ void run_tangent_group(const SweepFile& s, const Group& g,
   std::vector<phase::Tangent> V(size, phase::initial_tangent(1));
   std::vector<phase::ChaosIndicators> ind(size, phase::ChaosIndicators(k.t0, 1));
   std::vector<bool> alive(size, true);
-  const QuadraticModel& model = g.members.front().quadratic;
+  std::vector<QuadraticModel> models;
+  for (const Member& p : g.members) models.push_back(p.quadratic);
+  const bool one_model = std::all_of(models.begin(), models.end(), [&](const QuadraticModel& m) {
+    return same_model(m, models.front());
+  });
+  const std::optional<EnsembleModels> lanes =
+      one_model ? std::nullopt : std::optional<EnsembleModels>(std::in_place, models, k.ordering);
   const double h = n > 0 ? (k.t1 - k.t0) / static_cast<double>(n) : 0.0;
   const std::int64_t run = std::min(n, k.max_steps);
   for (std::int64_t i = 1; i <= run; ++i) {
-    stepper.advance(model, x, V, h, 1);
+    if (lanes) {
+      stepper.advance(*lanes, x, V, h, 1);
+    } else {
+      stepper.advance(models.front(), x, V, h, 1);
+    }
     const double t = (i == n) ? k.t1 : k.t0 + static_cast<double>(i) * h;
     for (std::size_t j = 0; j < size; ++j) {
       if (!alive[j]) continue;
@@ -240,12 +251,8 @@ std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std
         const io::Scenario sc = point_scenario(s, indices[slot]);
         const std::optional<RunKey> key = run_key(s, sc);
         if (!key) continue;
-        // The tangent stepper takes one model for all its points.
-        const bool tangent = tangent_sweep(s);
-        auto g = std::find_if(groups.begin(), groups.end(), [&](const Group& x) {
-          return same_run(x.key, *key) &&
-                 (!tangent || same_model(x.members.front().quadratic, sc.model.quadratic()));
-        });
+        auto g = std::find_if(groups.begin(), groups.end(),
+                              [&](const Group& x) { return same_run(x.key, *key); });
         if (g == groups.end()) g = groups.insert(groups.end(), Group{*key, {}});
         g->members.push_back(Member{slot, sc.model, sc.model.quadratic(), sc.initial});
       } catch (const std::exception&) {  // evaluate_point_safely reports it

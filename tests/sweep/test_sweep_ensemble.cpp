@@ -179,4 +179,22 @@ TEST(SweepEnsemble, MegnoMapIsEvaluatePointsBits) {
   EXPECT_NE(a.values[1], b.values[1]);
 }
 
+// MEGNO over the model's numbers (A across B, λ of both signs) in one ensemble tangent run, a
+// model per lane: every point the bits of its own tangent run.
+TEST(SweepEnsemble, MegnoOverModelParametersInOneRun) {
+  const std::string sweep =
+      "scenario = \"" + std::string(NEWTOP_SOURCE_DIR) +
+      "/examples/coulomb.toml\"\nquantities = [\"megno\", \"lyapunov_max\"]\n"
+      "[[axes]]\nkey = \"body.inertia[0]\"\nvalues = [0.8, 1.2, 1.6, 1.9]\n"
+      "[[axes]]\nkey = \"field.lambda\"\nstart = -1.5\nstop = 1.5\ncount = 5\n"
+      "[integrate]\nt_end = 5.0\nmethod = \"splitting4\"\n";
+  const SweepFile s = newtop::sweep::load_sweep(write_file("megno_params.toml", sweep));
+  expect_point_by_point(s);
+  const PointResult a = newtop::sweep::evaluate_point(s, 0),
+                    b = newtop::sweep::evaluate_point(s, 1);
+  ASSERT_EQ(a.status, "ok");
+  ASSERT_EQ(b.status, "ok");
+  EXPECT_NE(a.values[0], b.values[0]);
+}
+
 }  // namespace

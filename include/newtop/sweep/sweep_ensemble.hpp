@@ -4,7 +4,7 @@
 /// whose quantities are trajectory results only (final_state, drift) and whose runs share a
 /// splitting method and its step, the times and the step limit, in a quadratic field (each point
 /// with its own model, held per lane), are advanced together, in SIMD lanes; those of a sweep of
-/// megno and lyapunov_max only, sharing the model as well, through the ensemble tangent stepper
+/// megno and lyapunov_max only through the ensemble tangent stepper
 /// (newtop/phase/ensemble_tangent.hpp) with one tangent vector each. Each point's result is
 /// bit-identical to evaluate_point's (the ensemble steppers reproduce the scalar steppers bit for
 /// bit and the runs follow the fixed-step drivers), so a sweep's output does not depend on which
@@ -27,7 +27,7 @@ bool ensemble_sweep(const SweepFile& s);
 /// that share their run's settings (splitting method, step, t0, t_end, max_steps), four or more,
 /// are advanced together by the ensemble stepper, each on its own model (one model for all when
 /// they agree, a model per lane otherwise: a sweep over the body's or the field's numbers), or for
-/// megno and lyapunov_max by the ensemble tangent stepper (one model per run); any other point by
+/// megno and lyapunov_max by the ensemble tangent stepper; any other point by
 /// evaluate_point_safely. `in_ensemble`, when given, receives the number of points
 /// the ensemble stepper advanced, and `runs` the number of ensemble runs (groups of shared
 /// settings).
