@@ -3,7 +3,8 @@
 // plain array with a hand-written right-hand side), one trajectory at a time, in the same run.
 // One benchmark iteration is one trajectory-step; rates are per CPU second of the one thread.
 // tangent_*: the same with one tangent vector per trajectory (the ensemble tangent stepper against
-// TangentSplittingStepper).
+// TangentSplittingStepper); ensemble_lanes/*: a model per point (EnsembleModels), against the
+// one-model ensemble of the same table and path in the last column.
 // After the runs, each rate is printed as a ratio to the scalar stepper of the same table.
 // Run: build/bench/bench_ensemble --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //      --benchmark_enable_random_interleaving=true
@@ -48,6 +49,29 @@ void ensemble(benchmark::State& st, const char* table, SimdPath path) {
   EnsembleStepper e(composition_table(table), path);
   while (st.KeepRunningBatch(kPoints * kStepsPerCall)) {
     e.advance(m, x, kStep, kStepsPerCall);
+    benchmark::DoNotOptimize(x.m[0].data());
+  }
+  st.SetItemsProcessed(st.iterations());
+}
+
+// A model per point (EnsembleModels): the bench model's moments, λ and centre of mass varied
+// point by point, in one working frame (A < B < C throughout: one group).
+void ensemble_lanes(benchmark::State& st, const char* table, SimdPath path) {
+  const QuadraticModel m = bench_model();
+  EnsembleState x;
+  std::vector<QuadraticModel> models;
+  for (int i = 0; i < kPoints; ++i) {
+    const double d = 1e-4 * i;
+    models.push_back(
+        QuadraticModel{Body::from_principal(Vec3(1.0 + d, 1.5, 2.2 - d), 1.0,
+                                            Vec3(0.3, 0.2, 0.1 + d), m.body.gyrostat()),
+                       QuadraticField::coulomb(1.0, 0.5 + d)});
+    x.push_back(bench_state(models.back(), i));
+  }
+  EnsembleStepper e(composition_table(table), path);
+  const EnsembleModels lanes(models, e.ordering());
+  while (st.KeepRunningBatch(kPoints * kStepsPerCall)) {
+    e.advance(lanes, x, kStep, kStepsPerCall);
     benchmark::DoNotOptimize(x.m[0].data());
   }
   st.SetItemsProcessed(st.iterations());
@@ -127,18 +151,25 @@ class RatioReporter : public benchmark::ConsoleReporter {
   }
   void Finalize() override {
     ConsoleReporter::Finalize();
-    std::printf("\n%-38s %14s %10s\n", "benchmark", "steps/s/core", "/ scalar");
+    std::printf("\n%-38s %14s %10s %10s\n", "benchmark", "steps/s/core", "/ scalar", "/ shared");
     for (const auto& [name, rate] : rate_) {
       const std::string table =
           name.substr(name.find('/') + 1, name.find('/', name.find('/') + 1) - name.find('/') - 1);
       const std::string family = name.rfind("tangent_", 0) == 0 ? "tangent_scalar/" : "scalar/";
       auto scalar = rate_.find(family + table + "/");
       if (scalar == rate_.end()) scalar = rate_.find("scalar/splitting2/");  // odeint's rk4
+      // A model per lane against one model for all, same table and path.
+      const std::string lanes = "ensemble_lanes/";
+      auto shared = rate_.end();
+      if (name.rfind(lanes, 0) == 0) shared = rate_.find("ensemble/" + name.substr(lanes.size()));
+      std::printf("%-38s %14.4g ", name.c_str(), rate);
       if (scalar != rate_.end()) {
-        std::printf("%-38s %14.4g %10.2f\n", name.c_str(), rate, rate / scalar->second);
+        std::printf("%10.2f", rate / scalar->second);
       } else {
-        std::printf("%-38s %14.4g %10s\n", name.c_str(), rate, "");
+        std::printf("%10s", "");
       }
+      if (shared != rate_.end()) std::printf(" %10.2f", rate / shared->second);
+      std::printf("\n");
     }
   }
 
@@ -155,6 +186,10 @@ int main(int argc, char** argv) {
       benchmark::RegisterBenchmark(
           ("ensemble/" + std::string(table) + "/" + std::string(simd_path_name(path))).c_str(),
           [table, path](benchmark::State& st) { ensemble(st, table, path); });
+      benchmark::RegisterBenchmark(
+          ("ensemble_lanes/" + std::string(table) + "/" + std::string(simd_path_name(path)))
+              .c_str(),
+          [table, path](benchmark::State& st) { ensemble_lanes(st, table, path); });
     }
     benchmark::RegisterBenchmark(("scalar/" + std::string(table) + "/").c_str(),
                                  [table](benchmark::State& st) { scalar(st, table); });

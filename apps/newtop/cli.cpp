@@ -18,14 +18,13 @@ std::vector<Command>& commands() {
   return c;
 }
 
-namespace {
-
-// One line on stderr, exit code 2.
 int bad_input(std::string what) {
   std::replace(what.begin(), what.end(), '\n', ' ');
   std::cerr << "newtop: error: " << what << '\n';
   return kExitBadInput;
 }
+
+namespace {
 
 // `word` (a subcommand, an option of `where`) is not one of `names`: say so, with the closest
 // name or the list.

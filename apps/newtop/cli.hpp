@@ -1,7 +1,12 @@
 #pragma once
 // The whole command line as one call, for the program and for the Python module.
 
+#include <string>
+
 namespace newtop::app {
+
+/// Bad input: one line on std::cerr, "newtop: error: WHAT", and returns the exit code 2.
+int bad_input(std::string what);
 
 /// Parses argv (argv[0] is the program's name), runs the chosen subcommand with its output on
 /// std::cout and its messages on std::cerr, and returns the exit code of docs/cli.md. With

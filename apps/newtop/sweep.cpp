@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 
+#include "cli.hpp"
 #include "command.hpp"
 #include "interrupt.hpp"
 #include "newtop/io/json.hpp"
@@ -208,7 +209,15 @@ int run_rank(const SweepArgs& a, const MpiSession& mpi) {
 
 int run(const SweepArgs& a) {
   const MpiSession mpi;
-  if (mpi.rank() == 0) return run_rank(a, mpi);
+  if (mpi.rank() == 0) {
+    // Said before the session ends (MPI_Finalize): the other ranks, done at once with the same
+    // verdict, then end the job, and could take rank 0's line with it.
+    try {
+      return run_rank(a, mpi);
+    } catch (const InputError& e) {
+      return bad_input(e.what());
+    }
+  }
   // Every rank reads the sweep (the same files, the same verdict); only rank 0 speaks and writes.
   const Silence silent;
   try {

@@ -1,14 +1,21 @@
-// newtop sweep across the ranks of MPI: rank 0 hands out point indices on request and writes; the
-// others compute. A result travels as one line of the checkpoint's format (17 significant
-// digits), so it arrives as the same bits; each point is computed from its own scenario alone, so
-// the output does not depend on the number of ranks (docs/sweep.md).
+// newtop sweep across the ranks of MPI: rank 0 hands out batches of point indices on request and
+// writes; the others compute each batch as a thread of run_sweep does (sweep::evaluate_batch: the
+// ensemble stepper for a trajectory sweep, point by point otherwise). A result travels as one line
+// of the checkpoint's format (17 significant digits), so it arrives as the same bits; each point's
+// result is its own run's whatever the batch, so the output does not depend on the number of ranks
+// (docs/sweep.md).
 
 #include "sweep_mpi.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
+#include <sstream>
 #include <string>
+#include <vector>
+
+#include "newtop/sweep/sweep_ensemble.hpp"
 
 #ifdef NEWTOP_WITH_MPI
 #include <mpi.h>
@@ -19,9 +26,8 @@ namespace newtop::app {
 #ifdef NEWTOP_WITH_MPI
 namespace {
 
-constexpr int kRequest = 1;  // a worker asks for a point (carrying the last result, if any)
-constexpr int kPoint = 2;    // rank 0 sends a point index, or kStop
-constexpr std::uint64_t kStop = ~std::uint64_t{0};
+constexpr int kRequest = 1;  // a worker asks for a batch (carrying the last batch's results)
+constexpr int kPoints = 2;   // rank 0 sends a batch of point indices; an empty one: stop
 
 bool launched_by_mpi() {
   return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK");
@@ -32,11 +38,19 @@ void worker(const sweep::SweepFile& s) {
   for (;;) {
     MPI_Send(message.data(), static_cast<int>(message.size()), MPI_CHAR, 0, kRequest,
              MPI_COMM_WORLD);
-    std::uint64_t index = kStop;
-    MPI_Recv(&index, 1, MPI_UINT64_T, 0, kPoint, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    if (index == kStop) return;
-    const auto i = static_cast<std::size_t>(index);
-    message = sweep::encode_result(i, sweep::evaluate_point_safely(s, i));
+    MPI_Status status;
+    MPI_Probe(0, kPoints, MPI_COMM_WORLD, &status);
+    int count = 0;
+    MPI_Get_count(&status, MPI_UINT64_T, &count);
+    std::vector<std::uint64_t> batch(static_cast<std::size_t>(count));
+    MPI_Recv(batch.data(), count, MPI_UINT64_T, 0, kPoints, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (batch.empty()) return;
+    const std::vector<std::size_t> indices(batch.begin(), batch.end());
+    const std::vector<sweep::PointResult> r = sweep::evaluate_batch(s, indices);
+    message.clear();
+    for (std::size_t k = 0; k < indices.size(); ++k) {
+      message += sweep::encode_result(indices[k], r[k]);
+    }
   }
 }
 
@@ -44,6 +58,9 @@ sweep::SweepRun coordinator(int size, const sweep::SweepFile& s, sweep::SweepLed
                             const sweep::RunOptions& o) {
   const std::size_t width = sweep::quantity_columns(s).size();
   const std::vector<std::size_t>& todo = ledger.todo();
+  // Batches as the threads of run_sweep take them, for the worker ranks (dynamic balancing: a
+  // batch goes to whichever rank asks next).
+  const std::size_t batch = sweep::batch_size(s, todo.size(), size - 1);
   std::size_t next = 0;
   bool stopped = false;
   int active = size - 1;
@@ -55,16 +72,24 @@ sweep::SweepRun coordinator(int size, const sweep::SweepFile& s, sweep::SweepLed
     std::string message(static_cast<std::size_t>(length), '\0');
     MPI_Recv(message.data(), length, MPI_CHAR, status.MPI_SOURCE, kRequest, MPI_COMM_WORLD,
              MPI_STATUS_IGNORE);
-    if (!message.empty()) {
-      auto r = sweep::decode_result(message, width);
+    std::istringstream lines(message);
+    std::string line;
+    while (std::getline(lines, line)) {
+      auto r = sweep::decode_result(line + '\n', width);
       if (!r) throw std::runtime_error("sweep: a rank sent a result that does not read back");
       ledger.record(r->first, std::move(r->second));
     }
     if (!stopped && o.stop && o.stop()) stopped = true;
-    std::uint64_t index = kStop;
-    if (!stopped && next < todo.size()) index = todo[next++];
-    if (index == kStop) --active;
-    MPI_Send(&index, 1, MPI_UINT64_T, status.MPI_SOURCE, kPoint, MPI_COMM_WORLD);
+    std::vector<std::uint64_t> indices;
+    if (!stopped) {
+      const std::size_t end = std::min(todo.size(), next + batch);
+      indices.assign(todo.begin() + static_cast<std::ptrdiff_t>(next),
+                     todo.begin() + static_cast<std::ptrdiff_t>(end));
+      next = end;
+    }
+    if (indices.empty()) --active;
+    MPI_Send(indices.data(), static_cast<int>(indices.size()), MPI_UINT64_T, status.MPI_SOURCE,
+             kPoints, MPI_COMM_WORLD);
   }
   return ledger.finish(!stopped && next == todo.size(), size - 1);
 }

@@ -25,8 +25,9 @@ class MpiSession {
   int rank_ = 0, size_ = 1;
 };
 
-/// With more than one rank: rank 0 reads the checkpoint, hands out the points one at a time to the
-/// ranks that ask (dynamic balancing), records their results (checkpoint, progress) and returns
+/// With more than one rank: rank 0 reads the checkpoint, hands out batches of points
+/// (sweep::batch_size: one point, or a batch for the ensemble stepper) to the ranks that ask
+/// (dynamic balancing), records their results (checkpoint, progress) and returns
 /// the run; the other ranks compute and return nullopt. Bad input on rank 0 (a checkpoint without
 /// --resume) ends every rank: rank 0 throws it, the others throw a silent InputError.
 std::optional<sweep::SweepRun> run_sweep_ranks(const MpiSession& mpi, const sweep::SweepFile& s,

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "ensemble_kernel.hpp"
+#include "ensemble_program.hpp"
 #include "newtop/integrate/splitting.hpp"
 
 namespace newtop {
@@ -114,40 +114,42 @@ EnsembleStepper::EnsembleStepper(const CompositionTable& table, SplitOrdering or
   b_ = std::move(c.b);
 }
 
-namespace {
+namespace detail {
 
-using detail::EnsembleOp;
-using detail::EnsembleStage;
-
-// One step as stages, with the constants computed as run_step and the flows of splitting.hpp
-// compute them.
-std::vector<EnsembleStage> step_program(const std::vector<double>& a, const std::vector<double>& b,
-                                        FreeBodySplit split, const SplitFrame& f, double h) {
+std::vector<EnsembleStage> ensemble_step_program(const std::vector<double>& a,
+                                                 const std::vector<double>& b, FreeBodySplit split,
+                                                 const SplitFrame& f, double h, bool per_lane) {
   std::vector<EnsembleStage> p;
-  auto rotate = [&](int w, double ta, double tb) {
-    p.push_back({static_cast<EnsembleOp>(static_cast<int>(EnsembleOp::rotate0) + w), ta, tb});
+  // θ = m_w (ta rate_w) + tb k_over_i_w; `fixed`: θ = m_w ta + tb k_over_i_w.
+  auto rotate = [&](int w, double ta, double tb, bool fixed = false) {
+    const auto op = static_cast<EnsembleOp>(static_cast<int>(EnsembleOp::rotate0) + w);
+    if (per_lane) {
+      p.push_back({op, ta, tb, fixed});
+    } else {
+      p.push_back({op, fixed ? ta : ta * f.rate[w], tb * f.k_over_i[w]});
+    }
   };
   auto flow = [&](double t) {
     const double t2 = 0.5 * t;
     switch (split) {
       case FreeBodySplit::axes:  // AxesFlow
-        rotate(0, t2 * f.rate[0], -t2 * f.k_over_i[0]);
-        rotate(1, t2 * f.rate[1], -t2 * f.k_over_i[1]);
-        rotate(2, t * f.rate[2], -t * f.k_over_i[2]);
-        rotate(1, t2 * f.rate[1], -t2 * f.k_over_i[1]);
-        rotate(0, t2 * f.rate[0], -t2 * f.k_over_i[0]);
+        rotate(0, t2, -t2);
+        rotate(1, t2, -t2);
+        rotate(2, t, -t);
+        rotate(1, t2, -t2);
+        rotate(0, t2, -t2);
         break;
       case FreeBodySplit::spin:  // SpinFlow<gyrostat_ref>
-        p.push_back({EnsembleOp::spin, t * f.inv_ref, 0.0});
-        rotate(0, t2 * f.rate[0], -t2 * f.k_over_i[0]);
+        p.push_back({EnsembleOp::spin, per_lane ? t : t * f.inv_ref, 0.0});
+        rotate(0, t2, -t2);
         if (f.gyrostat_ref) {
-          rotate(1, t2 * f.rate[1], -t2 * f.k_over_i[1]);
-          rotate(2, 0.0, -t * f.k_over_i[2]);
-          rotate(1, t2 * f.rate[1], -t2 * f.k_over_i[1]);
+          rotate(1, t2, -t2);
+          rotate(2, 0.0, -t, true);
+          rotate(1, t2, -t2);
         } else {
-          rotate(1, t * f.rate[1], -t * f.k_over_i[1]);
+          rotate(1, t, -t);
         }
-        rotate(0, t2 * f.rate[0], -t2 * f.k_over_i[0]);
+        rotate(0, t2, -t2);
         break;
       case FreeBodySplit::exact:  // ExactFlow
         p.push_back({EnsembleOp::exact, t, 0.0});
@@ -163,7 +165,23 @@ std::vector<EnsembleStage> step_program(const std::vector<double>& a, const std:
   return p;
 }
 
-}  // namespace
+void ensemble_run(SimdPath path, const EnsembleTask& task) {
+  switch (path) {
+#ifdef NEWTOP_ENSEMBLE_X86
+    case SimdPath::avx2:
+      ensemble_run_avx2(task);
+      break;
+    case SimdPath::avx512:
+      ensemble_run_avx512(task);
+      break;
+#endif
+    default:
+      ensemble_run_portable(task);
+      break;
+  }
+}
+
+}  // namespace detail
 
 void EnsembleStepper::advance(const QuadraticModel& model, EnsembleState& x, double h,
                               std::int64_t steps) {
@@ -174,7 +192,8 @@ void EnsembleStepper::advance(const QuadraticModel& model, EnsembleState& x, dou
     f.axis = {0, 1, 2};
     f.sign = {1.0, 1.0, 1.0};
   }
-  const std::vector<EnsembleStage> program = step_program(a_, b_, ordering_.free_body, f, h);
+  const std::vector<detail::EnsembleStage> program =
+      detail::ensemble_step_program(a_, b_, ordering_.free_body, f, h, false);
 
   const std::size_t block = simd_block(path_);
   const std::size_t padded = (n + block - 1) / block * block;
@@ -202,19 +221,7 @@ void EnsembleStepper::advance(const QuadraticModel& model, EnsembleState& x, dou
   task.n = padded;
   task.steps = steps;
 
-  switch (path_) {
-#ifdef NEWTOP_ENSEMBLE_X86
-    case SimdPath::avx2:
-      detail::ensemble_run_avx2(task);
-      break;
-    case SimdPath::avx512:
-      detail::ensemble_run_avx512(task);
-      break;
-#endif
-    default:
-      detail::ensemble_run_portable(task);
-      break;
-  }
+  detail::ensemble_run(path_, task);
 
   for (int w = 0; w < 3; ++w) {
     const int i = f.axis[w];

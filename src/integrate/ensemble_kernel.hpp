@@ -29,11 +29,26 @@ namespace newtop::detail {
 enum class EnsembleOp : std::uint8_t { kick, rotate0, rotate1, rotate2, spin, exact };
 
 /// One stage of a step: kick (m += t γ × ∂V/∂γ; a = t), rotation about working axis I (θ = m_I a +
-/// b), spin (a = τ), exact free-body flow (a = t).
+/// b), spin (a = τ), exact free-body flow (a = t). With a model per lane the constants of the
+/// model are the lane's and a stage holds the times they multiply, as the scalar flows multiply
+/// them: rotation θ = m_I (a rate_I) + b k_over_i_I (θ = m_I a + b k_over_i_I when `fixed`), spin
+/// τ = a inv_ref.
 struct EnsembleStage {
   EnsembleOp op;
   double a;
   double b;
+  bool fixed = false;
+};
+
+/// The per-lane constants of a model (SplitFrame's and the kick's), in the working frame.
+enum LaneConstant : int {
+  kLaneRate = 0,      // + w: rate[w]
+  kLaneKOverI = 3,    // + w: k_over_i[w]
+  kLaneInvRef = 6,    // inv_ref
+  kLaneGrad0 = 7,     // + w: grad0[w]
+  kLaneLambda = 10,   // λ
+  kLaneInertia = 11,  // + w: inertia[w]
+  kLaneConstants = 14
 };
 
 /// What a kernel works on: points in the working frame of the split as six arrays of n numbers
@@ -46,6 +61,10 @@ struct EnsembleTask {
   double lambda;
   double inertia[3];
   const Body* body;  ///< for the exact free-body flow (working frame = body frame)
+  /// A model per lane: its constants by LaneConstant (n numbers each; grad0, lambda, inertia and
+  /// body above are then unused) and its body; all null: the one model above.
+  const double* lane[kLaneConstants];
+  const Body* const* bodies;
   double* m[3];
   double* g[3];
   std::size_t n;
@@ -69,6 +88,11 @@ void ensemble_run_avx512(const EnsembleTask& task);
 std::size_t ensemble_block_avx512();
 #endif
 
+}  // namespace newtop::detail
+
+#include "ensemble_kernel_models.hpp"
+
+namespace newtop::detail {
 namespace ensemble_simd {
 namespace {
 
@@ -94,16 +118,16 @@ struct Block {
 // Kick over t: ∂V/∂γ = grad0 + λ Iγ, L = γ × ∂V/∂γ, m += t L (kick in splitting.hpp, in the
 // working frame: the signs of a proper signed permutation are exact, and the cross product keeps
 // its form). γ += 0 as in the scalar kick (it turns −0 into +0).
-template <class Isa>
-NEWTOP_AI void kick(Block<Isa>& z, const EnsembleTask& k, double t) {
+template <class Isa, class M>
+NEWTOP_AI void kick(Block<Isa>& z, const M& c, double t) {
   using V = typename Isa::V;
-  const V c0 = Isa::splat(k.grad0[0]), c1 = Isa::splat(k.grad0[1]), c2 = Isa::splat(k.grad0[2]);
-  const V lam = Isa::splat(k.lambda), T = Isa::splat(t), zero = Isa::splat(0.0);
-  const V i0 = Isa::splat(k.inertia[0]), i1 = Isa::splat(k.inertia[1]),
-          i2 = Isa::splat(k.inertia[2]);
+  const V T = Isa::splat(t), zero = Isa::splat(0.0);
   for (int b = 0; b < Isa::B; ++b) {
     const V g0 = z.g[0][b], g1 = z.g[1][b], g2 = z.g[2][b];
-    const V d0 = c0 + lam * (i0 * g0), d1 = c1 + lam * (i1 * g1), d2 = c2 + lam * (i2 * g2);
+    const V lam = c.lambda(b);
+    const V d0 = c.grad0(0, b) + lam * (c.inertia(0, b) * g0),
+            d1 = c.grad0(1, b) + lam * (c.inertia(1, b) * g1),
+            d2 = c.grad0(2, b) + lam * (c.inertia(2, b) * g2);
     z.m[0][b] = z.m[0][b] + T * (g1 * d2 - g2 * d1);
     z.m[1][b] = z.m[1][b] + T * (g2 * d0 - g0 * d2);
     z.m[2][b] = z.m[2][b] + T * (g0 * d1 - g1 * d0);
@@ -115,15 +139,15 @@ NEWTOP_AI void kick(Block<Isa>& z, const EnsembleTask& k, double t) {
 
 // The flow of a function of m_I (axis_flow and rotate in sub_flows.hpp): θ = m_I ta + tb, then m
 // and γ turn about e_I by x_J += cm1 x_J + s x_K, x_K += cm1 x_K − s x_J.
-template <int I, class Isa>
-NEWTOP_AI void rotation(Block<Isa>& z, double ta, double tb) {
+template <int I, class Isa, class M>
+NEWTOP_AI void rotation(Block<Isa>& z, const M& c, const EnsembleStage& st) {
   using V = typename Isa::V;
   constexpr int J = (I + 1) % 3, K = (I + 2) % 3, B = Isa::B;
-  const V TA = Isa::splat(ta), TB = Isa::splat(tb), lim = Isa::splat(kShort);
+  const V lim = Isa::splat(kShort);
   V theta[B], t2[B], s[B], cm1[B];
   bool short_series = true;
   for (int b = 0; b < B; ++b) {
-    theta[b] = z.m[I][b] * TA + TB;
+    theta[b] = z.m[I][b] * c.ta(st, I, b) + c.tb(st, I, b);
     t2[b] = theta[b] * theta[b];
     short_series &= Isa::all_le(t2[b], lim);
   }
@@ -157,11 +181,12 @@ NEWTOP_AI void rotation(Block<Isa>& z, double ta, double tb) {
 
 // The flow of ½|m|²/I over t, τ = t/I (spin_flow in sub_flows.hpp): γ turns about m by Rodrigues'
 // formula with u = −τ m.
-template <class Isa>
-NEWTOP_AI void spin(Block<Isa>& z, double tau) {
+template <class Isa, class M>
+NEWTOP_AI void spin(Block<Isa>& z, const M& model, const EnsembleStage& st) {
   using V = typename Isa::V;
-  const V mtau = Isa::splat(-tau), lim = Isa::splat(kShort);
+  const V lim = Isa::splat(kShort);
   for (int b = 0; b < Isa::B; ++b) {
+    const V mtau = -model.tau(st, b);
     const V u0 = mtau * z.m[0][b], u1 = mtau * z.m[1][b], u2 = mtau * z.m[2][b];
     const V phi2 = u0 * u0 + u1 * u1 + u2 * u2;
     const V p4 = phi2 * phi2;
@@ -189,13 +214,13 @@ NEWTOP_AI void spin(Block<Isa>& z, double tau) {
 }
 
 // The exact free-body flow, lane by lane through the scalar function.
-template <class Isa>
-void exact(Block<Isa>& z, const EnsembleTask& k, double t) {
+template <class Isa, class M>
+void exact(Block<Isa>& z, const M& c, double t) {
   for (int b = 0; b < Isa::B; ++b) {
     for (int l = 0; l < Block<Isa>::W; ++l) {
       double m[3] = {z.m[0][b][l], z.m[1][b][l], z.m[2][b][l]};
       double g[3] = {z.g[0][b][l], z.g[1][b][l], z.g[2][b][l]};
-      ensemble_exact_flow(*k.body, m, g, t);
+      ensemble_exact_flow(c.body(b, l), m, g, t);
       for (int w = 0; w < 3; ++w) {
         z.m[w][b][l] = m[w];
         z.g[w][b][l] = g[w];
@@ -204,14 +229,16 @@ void exact(Block<Isa>& z, const EnsembleTask& k, double t) {
   }
 }
 
-/// Advances every block of the task by task.steps steps.
-template <class Isa>
-void run_blocks(const EnsembleTask& k) {
+/// Advances every block of the task by task.steps steps, with the model M (SharedModel or
+/// LaneModels).
+template <class Isa, template <class> class M>
+void run_model_blocks(const EnsembleTask& k) {
   using V = typename Isa::V;
   constexpr int B = Isa::B, W = Block<Isa>::W;
   constexpr std::size_t points = std::size_t(W) * B;
   for (std::size_t first = 0; first < k.n; first += points) {
     Block<Isa> z;
+    const M<Isa> c{k, first};
     for (int w = 0; w < 3; ++w) {
       for (int b = 0; b < B; ++b) {
         __builtin_memcpy(&z.m[w][b], k.m[w] + first + std::size_t(b * W), sizeof(V));
@@ -223,22 +250,22 @@ void run_blocks(const EnsembleTask& k) {
         const EnsembleStage& st = k.stages[i];
         switch (st.op) {
           case EnsembleOp::kick:
-            kick(z, k, st.a);
+            kick(z, c, st.a);
             break;
           case EnsembleOp::rotate0:
-            rotation<0>(z, st.a, st.b);
+            rotation<0>(z, c, st);
             break;
           case EnsembleOp::rotate1:
-            rotation<1>(z, st.a, st.b);
+            rotation<1>(z, c, st);
             break;
           case EnsembleOp::rotate2:
-            rotation<2>(z, st.a, st.b);
+            rotation<2>(z, c, st);
             break;
           case EnsembleOp::spin:
-            spin(z, st.a);
+            spin(z, c, st);
             break;
           case EnsembleOp::exact:
-            exact(z, k, st.a);
+            exact(z, c, st.a);
             break;
         }
       }
@@ -249,6 +276,16 @@ void run_blocks(const EnsembleTask& k) {
         __builtin_memcpy(k.g[w] + first + std::size_t(b * W), &z.g[w][b], sizeof(V));
       }
     }
+  }
+}
+
+/// Advances every block of the task by task.steps steps (a model per lane where the task has one).
+template <class Isa>
+void run_blocks(const EnsembleTask& k) {
+  if (k.lane[0] != nullptr) {
+    run_model_blocks<Isa, LaneModels>(k);
+  } else {
+    run_model_blocks<Isa, SharedModel>(k);
   }
 }
 

@@ -9,6 +9,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "newtop/integrate/ensemble.hpp"
 #include "newtop/sweep/sweep.hpp"
 #include "newtop/sweep/sweep_ensemble.hpp"
 
@@ -171,6 +172,22 @@ std::optional<std::pair<std::size_t, PointResult>> decode_result(const std::stri
   return parse_line(line, width);
 }
 
+std::size_t batch_size(const SweepFile& s, std::size_t count, int workers) {
+  if (!ensemble_sweep(s)) return 1;
+  const std::size_t shares = 4 * static_cast<std::size_t>(std::max(workers, 1));
+  const std::size_t block = simd_block(best_simd_path());
+  const std::size_t share = std::clamp<std::size_t>((count + shares - 1) / shares, 1, 256);
+  return (share + block - 1) / block * block;
+}
+
+std::vector<PointResult> evaluate_batch(const SweepFile& s, std::span<const std::size_t> indices) {
+  if (ensemble_sweep(s)) return evaluate_points(s, indices);
+  std::vector<PointResult> r;
+  r.reserve(indices.size());
+  for (const std::size_t i : indices) r.push_back(evaluate_point_safely(s, i));
+  return r;
+}
+
 SweepRun run_sweep(const SweepFile& s, const RunOptions& o) {
   SweepLedger ledger(s, o);
   const std::vector<std::size_t>& todo = ledger.todo();
@@ -180,33 +197,19 @@ SweepRun run_sweep(const SweepFile& s, const RunOptions& o) {
 #ifdef _OPENMP
   threads = o.threads > 0 ? o.threads : omp_get_max_threads();
 #endif
-  if (ensemble_sweep(s)) {
-    // Trajectory quantities only: batches of points through the ensemble stepper
-    // (sweep_ensemble.hpp), each point's result the same bits as evaluate_point's; a batch fills at
-    // least one block of SIMD lanes.
-    const auto batch = std::clamp<std::int64_t>((count + threads - 1) / threads, 64, 256);
+  // Batches of points (one point each unless the sweep goes through the ensemble stepper,
+  // sweep_ensemble.hpp), each point's result the same bits as evaluate_point's.
+  const auto batch = static_cast<std::int64_t>(batch_size(s, todo.size(), threads));
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-    for (std::int64_t first = 0; first < count; first += batch) {
-      if (stopped.load() || (o.stop && o.stop())) {
-        stopped = true;
-        continue;
-      }
-      const auto part = std::span<const std::size_t>(todo).subspan(
-          static_cast<std::size_t>(first),
-          static_cast<std::size_t>(std::min(batch, count - first)));
-      std::vector<PointResult> r = evaluate_points(s, part);
-      for (std::size_t k = 0; k < part.size(); ++k) ledger.record(part[k], std::move(r[k]));
-    }
-    return ledger.finish(!stopped.load(), threads);
-  }
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (std::int64_t j = 0; j < count; ++j) {
+  for (std::int64_t first = 0; first < count; first += batch) {
     if (stopped.load() || (o.stop && o.stop())) {
       stopped = true;
       continue;
     }
-    const std::size_t i = todo[static_cast<std::size_t>(j)];
-    ledger.record(i, evaluate_point_safely(s, i));
+    const auto part = std::span<const std::size_t>(todo).subspan(
+        static_cast<std::size_t>(first), static_cast<std::size_t>(std::min(batch, count - first)));
+    std::vector<PointResult> r = evaluate_batch(s, part);
+    for (std::size_t k = 0; k < part.size(); ++k) ledger.record(part[k], std::move(r[k]));
   }
   return ledger.finish(!stopped.load(), threads);
 }

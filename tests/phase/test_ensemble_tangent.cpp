@@ -125,6 +125,87 @@ TEST(EnsembleTangent, StateBitIdenticalTangentToRoundOffWhereLanesLeaveTheSeries
   expect_scalar_agreement(0.1, 3.0);  // rotation angles up to ~0.6
 }
 
+// With one tangent vector (MEGNO, λ_max) the scalar kick forms (∂L/∂γ) δγ without the matrix
+// (moment_derivative: δγ × ∂V/∂γ + γ × λIδγ), the same products and sums as the ensemble's kick in
+// another order of commutative operations: the tangent vector is bit-identical too (the sweep's
+// MEGNO maps rely on it).
+TEST(EnsembleTangent, OneTangentVectorBitIdentical) {
+  if (kScalarMayContract) GTEST_SKIP() << "the scalar stepper may use fused multiply-adds here";
+  const QuadraticModel model = test::generic_model(Vec3(0.1, -0.2, 0.05));
+  const Points p0 = random_points(model, 37, 3.0, 1, 77);
+  for (const char* name : {"splitting2", "splitting4", "splitting6", "splitting8"}) {
+    const CompositionTable& table = composition_table(name);
+    for (bool outside : {false, true}) {
+      SplitOrdering o = default_ordering(table);
+      o.kick_outside = outside;
+      Points ref = p0;
+      for (std::size_t i = 0; i < ref.x.size(); ++i) {
+        TangentSplittingStepper s(table, o);
+        for (int k = 0; k < kSteps; ++k) s.step(model, ref.x[i], ref.V[i], 0.1);
+      }
+      for (SimdPath path : available_paths()) {
+        EnsembleTangentStepper e(table, o, path);
+        EnsembleState x(p0.x);
+        std::vector<Tangent> V = p0.V;
+        e.advance(model, x, V, 0.1, kSteps);
+        for (std::size_t i = 0; i < p0.x.size(); ++i) {
+          ASSERT_TRUE(same_bits(x[i], ref.x[i]) && same_bits(V[i], ref.V[i]))
+              << name << (outside ? " kick outside " : " kick inside ") << simd_path_name(path)
+              << " point " << i;
+        }
+      }
+    }
+  }
+}
+
+// A model per point (random bodies and fields, the axes in every order of size): each point with
+// one tangent vector bit-identical to TangentSplittingStepper on its own model, on every path;
+// the same points reversed give the same bits.
+TEST(EnsembleTangent, ModelPerLaneBitIdenticalWithOneVector) {
+  if (kScalarMayContract) GTEST_SKIP() << "the scalar stepper may use fused multiply-adds here";
+  const std::vector<QuadraticModel> models = test::random_models(41, true, 321);
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Points p0;
+  for (const QuadraticModel& m : models) {
+    p0.x.push_back(test::random_start(m.body, 3.0, rng));
+    Tangent V(6, 1);
+    for (int r = 0; r < 6; ++r) V(r, 0) = u(rng);
+    p0.V.push_back(V);
+  }
+  for (const char* name : {"splitting2", "splitting6"}) {
+    const CompositionTable& table = composition_table(name);
+    const SplitOrdering o = default_ordering(table);
+    Points ref = p0;
+    for (std::size_t i = 0; i < ref.x.size(); ++i) {
+      TangentSplittingStepper s(table, o);
+      for (int k = 0; k < kSteps; ++k) s.step(models[i], ref.x[i], ref.V[i], 0.1);
+    }
+    const EnsembleModels lanes(models, o);
+    ASSERT_GT(lanes.groups(), 1u) << "the models should span several orders of the axes";
+    for (SimdPath path : available_paths()) {
+      EnsembleTangentStepper e(table, o, path);
+      EnsembleState x(p0.x);
+      std::vector<Tangent> V = p0.V;
+      e.advance(lanes, x, V, 0.1, kSteps);
+      for (std::size_t i = 0; i < p0.x.size(); ++i) {
+        ASSERT_TRUE(same_bits(x[i], ref.x[i]) && same_bits(V[i], ref.V[i]))
+            << name << " " << simd_path_name(path) << " point " << i;
+      }
+      std::vector<QuadraticModel> rm(models.rbegin(), models.rend());
+      std::vector<State> rx(p0.x.rbegin(), p0.x.rend());
+      std::vector<Tangent> rv(p0.V.rbegin(), p0.V.rend());
+      EnsembleState xr(rx);
+      e.advance(EnsembleModels(rm, o), xr, rv, 0.1, kSteps);
+      for (std::size_t i = 0; i < p0.x.size(); ++i) {
+        const std::size_t k = p0.x.size() - 1 - i;
+        ASSERT_TRUE(same_bits(xr[k], ref.x[i]) && same_bits(rv[k], ref.V[i]))
+            << name << " " << simd_path_name(path) << " reversed " << i;
+      }
+    }
+  }
+}
+
 TEST(EnsembleTangent, IndependentOfLanesAndGrouping) {
   const QuadraticModel model = test::generic_model(Vec3(0.1, -0.2, 0.05));
   const Points p0 = random_points(model, 23, 2.5, 2, 5);

@@ -49,14 +49,20 @@ std::string heavy_top_sweep(const std::string& quantities, const std::string& ex
          extra;
 }
 
-void expect_point_by_point(const SweepFile& s) {
+// `runs`: the number of ensemble runs the whole sweep takes as one batch.
+void expect_point_by_point(const SweepFile& s, std::size_t runs = 1) {
   ASSERT_TRUE(newtop::sweep::ensemble_sweep(s));
   // Every point goes through the ensemble stepper (none falls back to evaluate_point).
   std::vector<std::size_t> all(newtop::sweep::point_count(s));
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-  std::size_t in_ensemble = 0;
-  newtop::sweep::evaluate_points(s, all, &in_ensemble);
+  std::size_t in_ensemble = 0, batch_runs = 0;
+  const std::vector<PointResult> batch =
+      newtop::sweep::evaluate_points(s, all, &in_ensemble, &batch_runs);
   EXPECT_EQ(in_ensemble, all.size());
+  EXPECT_EQ(batch_runs, runs);
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    expect_same(batch[i], newtop::sweep::evaluate_point_safely(s, i), i);
+  }
   for (int threads : {1, 2}) {
     newtop::sweep::RunOptions o;
     o.threads = threads;
@@ -86,14 +92,15 @@ TEST(SweepEnsemble, FinalStateAloneIsEvaluatePointsBits) {
       newtop::sweep::load_sweep(write_file("final.toml", heavy_top_sweep("\"final_state\"", ""))));
 }
 
-// Points of one batch with different models (C), steps, methods' step limits: grouped by run.
+// Points of one batch with different models (C) and step limits: grouped by step limit, the
+// models held per lane.
 TEST(SweepEnsemble, PointsWithDifferentRunsInOneBatch) {
   const std::string extra =
       "[[axes]]\nkey = \"body.inertia[2]\"\nvalues = [1.0, 1.5]\n"
       "[[axes]]\nkey = \"integrate.max_steps\"\nvalues = [249, 250]\n";
   const SweepFile s = newtop::sweep::load_sweep(
       write_file("mixed.toml", heavy_top_sweep("\"drift\", \"final_state\"", extra)));
-  expect_point_by_point(s);
+  expect_point_by_point(s, 2);
   // Both outcomes, at the edge: the run takes 250 steps.
   EXPECT_EQ(newtop::sweep::evaluate_point(s, 0).status, "step_limit");
   EXPECT_EQ(newtop::sweep::evaluate_point(s, 1).status, "ok");
@@ -107,6 +114,87 @@ TEST(SweepEnsemble, PointsWithDifferentRunsInOneBatch) {
   for (std::size_t k = 0; k < some.size(); ++k) {
     expect_same(r[k], newtop::sweep::evaluate_point_safely(s, some[k]), some[k]);
   }
+}
+
+// A sweep over the model's numbers (the moments in every order of size, the field's λ, the
+// gyrostat, the centre of mass) in one ensemble run, a model per lane: every point's result is the
+// bits of its own run.
+TEST(SweepEnsemble, PointsOverModelParametersInOneRun) {
+  const fs::path base =
+      write_file("gyrostat.toml",
+                 "[body]\ninertia = [1.0, 1.5, 2.2]\nmass = 1.0\ncenter_of_mass = [0.3, 0.2, 0.1]\n"
+                 "gyrostat = [0.1, -0.2, 0.05]\n[field]\ng = 1.0\nlambda = 0.5\n"
+                 "[initial]\nomega = [0.5, 1.1, -0.4]\ngamma = [0.48, -0.6, 0.64]\n"
+                 "[integrate]\nt_end = 2.0\nstep = 0.01\nmethod = \"splitting4\"\n");
+  const std::string sweep =
+      "scenario = \"" + base.string() +
+      "\"\nquantities = [\"final_state\", \"drift\"]\n"
+      "[[axes]]\nkey = \"body.inertia[0]\"\nvalues = [0.8, 1.2, 1.7, 2.0]\n"
+      "[[axes]]\nkey = \"field.lambda\"\nstart = -1.0\nstop = 1.0\ncount = 5\n"
+      "[[axes]]\nkey = \"body.gyrostat[2]\"\nvalues = [0.0, 0.05]\n"
+      "[[axes]]\nkey = \"body.center_of_mass[2]\"\nvalues = [-0.1, 0.1, 0.4]\n";
+  const SweepFile s = newtop::sweep::load_sweep(write_file("params.toml", sweep));
+  expect_point_by_point(s);
+  // The points differ: their final states are not one state.
+  const PointResult a = newtop::sweep::evaluate_point(s, 0),
+                    b = newtop::sweep::evaluate_point(s, 1);
+  ASSERT_EQ(a.status, "ok");
+  ASSERT_EQ(b.status, "ok");
+  EXPECT_NE(a.values[1], b.values[1]);
+}
+
+// Points whose runs all differ (a sweep over the step) run one by one: a block of lanes for one
+// point would cost more than its scalar run. The results are the same bits either way.
+TEST(SweepEnsemble, PointsAloneInTheirRunRunOneByOne) {
+  const SweepFile s = newtop::sweep::load_sweep(
+      write_file("steps.toml", heavy_top_sweep("\"final_state\"",
+                                               "[[axes]]\nkey = \"integrate.step\"\n"
+                                               "values = [1e-3, 2e-3, 4e-3]\n")));
+  // 150 points of three steps; then the steps alone.
+  expect_point_by_point(s, 3);
+  std::vector<std::size_t> alone = {0, 1, 2};
+  std::size_t in_ensemble = 1, runs = 1;
+  const std::vector<PointResult> r = newtop::sweep::evaluate_points(s, alone, &in_ensemble, &runs);
+  EXPECT_EQ(in_ensemble, 0u);
+  EXPECT_EQ(runs, 0u);
+  for (std::size_t i : alone) expect_same(r[i], newtop::sweep::evaluate_point_safely(s, i), i);
+}
+
+// MEGNO and λ_max over initial conditions (the map of examples/sweep_megno.toml, shorter): one
+// ensemble tangent run, every point the bits of newtop chaos's run (evaluate_point).
+TEST(SweepEnsemble, MegnoMapIsEvaluatePointsBits) {
+  const std::string sweep =
+      "scenario = \"" + std::string(NEWTOP_SOURCE_DIR) +
+      "/examples/section_chaotic.toml\"\nquantities = [\"lyapunov_max\", \"megno\"]\n"
+      "[[axes]]\nkey = \"initial.omega[0]\"\nstart = -1.5\nstop = 1.5\ncount = 7\n"
+      "[[axes]]\nkey = \"initial.omega[1]\"\nstart = -1.5\nstop = 1.5\ncount = 7\n"
+      "[integrate]\nt_end = 40.0\n";
+  const SweepFile s = newtop::sweep::load_sweep(write_file("megno.toml", sweep));
+  expect_point_by_point(s);
+  // The map is not flat: the indicators differ between points.
+  const PointResult a = newtop::sweep::evaluate_point(s, 0),
+                    b = newtop::sweep::evaluate_point(s, 24);
+  ASSERT_EQ(a.status, "ok");
+  ASSERT_EQ(b.status, "ok");
+  EXPECT_NE(a.values[1], b.values[1]);
+}
+
+// MEGNO over the model's numbers (A across B, λ of both signs) in one ensemble tangent run, a
+// model per lane: every point the bits of its own tangent run.
+TEST(SweepEnsemble, MegnoOverModelParametersInOneRun) {
+  const std::string sweep =
+      "scenario = \"" + std::string(NEWTOP_SOURCE_DIR) +
+      "/examples/coulomb.toml\"\nquantities = [\"megno\", \"lyapunov_max\"]\n"
+      "[[axes]]\nkey = \"body.inertia[0]\"\nvalues = [0.8, 1.2, 1.6, 1.9]\n"
+      "[[axes]]\nkey = \"field.lambda\"\nstart = -1.5\nstop = 1.5\ncount = 5\n"
+      "[integrate]\nt_end = 5.0\nmethod = \"splitting4\"\n";
+  const SweepFile s = newtop::sweep::load_sweep(write_file("megno_params.toml", sweep));
+  expect_point_by_point(s);
+  const PointResult a = newtop::sweep::evaluate_point(s, 0),
+                    b = newtop::sweep::evaluate_point(s, 1);
+  ASSERT_EQ(a.status, "ok");
+  ASSERT_EQ(b.status, "ok");
+  EXPECT_NE(a.values[0], b.values[0]);
 }
 
 }  // namespace

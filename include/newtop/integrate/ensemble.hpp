@@ -21,9 +21,14 @@
 #include <vector>
 
 #include "newtop/integrate/composition_tables.hpp"
+#include "newtop/integrate/splitting.hpp"
 #include "newtop/model/basic_model.hpp"
 
 namespace newtop {
+
+namespace phase {
+class EnsembleTangentStepper;
+}
 
 /// The points of an ensemble in structure-of-arrays form, body frame: point i is
 /// m = (m[0][i], m[1][i], m[2][i]) and γ = (gamma[0][i], gamma[1][i], gamma[2][i]).
@@ -53,6 +58,39 @@ SimdPath best_simd_path();
 /// to a multiple; the padding never changes a point's result).
 std::size_t simd_block(SimdPath path);
 
+/// One quadratic-field model per point of an ensemble (a sweep over the body's or the field's
+/// numbers), prepared for one ordering of the split: each point's constants of the split and the
+/// kick (split_frame: rates, k/I, 1/I_r; M g r0, λ, I), held per lane by the stepper.
+///
+/// The grouping rule: a model's working frame follows its body (by_moment orders the axes by
+/// increasing moment; the spin split runs one more rotation when the reference axis has k ≠ 0),
+/// and the lanes of one kernel run one program of stages; so the points are grouped by (working
+/// axes, that rotation), and the stepper runs each group on its own. Within a group each lane does
+/// its point's scalar operations on its own constants, so each point's result is
+/// SplittingStepper's on its own model, bit for bit, whatever the other points.
+class EnsembleModels {
+ public:
+  EnsembleModels(std::span<const QuadraticModel> models, const SplitOrdering& ordering);
+
+  std::size_t size() const { return models_.size(); }
+  const SplitOrdering& ordering() const { return ordering_; }
+  /// The number of groups (distinct working frames).
+  std::size_t groups() const { return groups_.size(); }
+
+ private:
+  friend class EnsembleStepper;
+  friend class phase::EnsembleTangentStepper;
+  struct Group {
+    SplitFrame frame;                 // the group's axes, signs and gyrostat_ref
+    std::vector<std::size_t> points;  // by position in the ensemble
+    std::size_t padded = 0;           // points, padded to a multiple of every kernel's block
+    std::vector<double> constants;    // per lane, padded: constant c of lane j at c padded + j
+  };
+  SplitOrdering ordering_;
+  std::vector<QuadraticModel> models_;
+  std::vector<Group> groups_;
+};
+
 /// Advances an EnsembleState by a composition table (any table whose ordering splits the free body
 /// into axes or spin rotations, or the exact free-body flow, which is taken lane by lane through
 /// the scalar flow). Holds a workspace: one stepper per thread.
@@ -71,6 +109,10 @@ class EnsembleStepper {
   /// `steps` steps of size h of every point of x (x's points are independent; the model is
   /// shared).
   void advance(const QuadraticModel& model, EnsembleState& x, double h, std::int64_t steps);
+  /// The same with a model per point (models.size() == x.size() and the stepper's ordering;
+  /// InputError otherwise): point i of x is advanced on model i, bit-identical to
+  /// SplittingStepper::step on that model alone.
+  void advance(const EnsembleModels& models, EnsembleState& x, double h, std::int64_t steps);
 
  private:
   int order_;

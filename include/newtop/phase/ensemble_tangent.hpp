@@ -7,7 +7,9 @@
 /// Guarantee: each point's state is bit-identical to TangentSplittingStepper's, and so are its
 /// tangent vectors through the rotations; the kick forms (∂L/∂γ) δγ as γ × (λ I δγ) − (∂V/∂γ) × δγ
 /// instead of through the 3 × 3 matrix, so the tangent vectors agree with the scalar stepper's to
-/// round-off (tests/phase/test_ensemble_tangent.cpp bounds it). A point's results, state and
+/// round-off (tests/phase/test_ensemble_tangent.cpp bounds it); with one tangent vector the scalar
+/// kick forms it without the matrix too (moment_derivative), and the tangent vector is
+/// bit-identical as well (tested). A point's results, state and
 /// tangent vectors, do not depend on its lane, the ensemble's size or the instruction set (bit for
 /// bit).
 
@@ -33,6 +35,11 @@ class EnsembleTangentStepper {
   /// x.size(), every V[i] with the same number of columns, 1 to 6; InputError otherwise).
   void advance(const QuadraticModel& model, EnsembleState& x, std::vector<Tangent>& V, double h,
                std::int64_t steps);
+  /// The same with a model per point (EnsembleModels prepared for the stepper's ordering; its
+  /// groups share the order of the axis rotations): point i on model i, with the guarantee above
+  /// on its own model.
+  void advance(const EnsembleModels& models, EnsembleState& x, std::vector<Tangent>& V, double h,
+               std::int64_t steps);
 
  private:
   int order_;
@@ -40,6 +47,7 @@ class EnsembleTangentStepper {
   SimdPath path_;
   std::vector<double> a_, b_;
   std::vector<double> workspace_;
+  std::vector<double> constants_;  // per lane, with a model per point
 };
 
 }  // namespace newtop::phase
