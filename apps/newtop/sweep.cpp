@@ -170,8 +170,11 @@ int run_rank(const SweepArgs& a, const MpiSession& mpi) {
               << '\n';
     return 128 + pending_signal();
   }
-  std::size_t failed = 0;
-  for (const auto& r : run.results) failed += r.status != "ok";
+  std::size_t failed = 0, off_level = 0;  // off the energy level: no run, not a failure
+  for (const auto& r : run.results) {
+    off_level += r.status == "off_level";
+    failed += r.status != "ok" && r.status != "off_level";
+  }
   if (file && hdf5) {
     file.reset();  // the checked name; HDF5 writes its own temporary and renames it
     write_hdf5(*a.out, s, run);
@@ -187,6 +190,7 @@ int run_rank(const SweepArgs& a, const MpiSession& mpi) {
     j["scenario"] = s.base_source;
     j["points"] = run.results.size();
     j["failed"] = failed;
+    j["off_level"] = off_level;
     j["resumed"] = run.resumed;
     j["threads"] = run.threads;
     j["quantities"] = s.quantities;
@@ -201,7 +205,9 @@ int run_rank(const SweepArgs& a, const MpiSession& mpi) {
                 : run.threads == 1 ? " thread"
                                    : " threads");
   if (run.resumed) std::cout << " (" << run.resumed << " read back from the checkpoint)";
-  std::cout << "; " << failed << " failed\n";
+  std::cout << "; " << failed << " failed";
+  if (off_level) std::cout << ", " << off_level << " off the energy level";
+  std::cout << "\n";
   if (a.out) std::cout << "results: " << *a.out << "\n";
   if (!a.out) write_csv(std::cout, s, run);
   return kExitOk;
