@@ -50,6 +50,15 @@ std::string heavy_top_sweep(const std::string& quantities, const std::string& ex
 }
 
 // `runs`: the number of ensemble runs the whole sweep takes as one batch.
+// Points i and j computed and different in column c (the sweep is not one point repeated).
+void expect_points_differ(const SweepFile& s, std::size_t i, std::size_t j, std::size_t c) {
+  const PointResult a = newtop::sweep::evaluate_point(s, i),
+                    b = newtop::sweep::evaluate_point(s, j);
+  ASSERT_EQ(a.status, "ok");
+  ASSERT_EQ(b.status, "ok");
+  EXPECT_NE(a.values[c], b.values[c]);
+}
+
 void expect_point_by_point(const SweepFile& s, std::size_t runs = 1) {
   ASSERT_TRUE(newtop::sweep::ensemble_sweep(s));
   // Every point goes through the ensemble stepper (none falls back to evaluate_point).
@@ -135,12 +144,7 @@ TEST(SweepEnsemble, PointsOverModelParametersInOneRun) {
       "[[axes]]\nkey = \"body.center_of_mass[2]\"\nvalues = [-0.1, 0.1, 0.4]\n";
   const SweepFile s = newtop::sweep::load_sweep(write_file("params.toml", sweep));
   expect_point_by_point(s);
-  // The points differ: their final states are not one state.
-  const PointResult a = newtop::sweep::evaluate_point(s, 0),
-                    b = newtop::sweep::evaluate_point(s, 1);
-  ASSERT_EQ(a.status, "ok");
-  ASSERT_EQ(b.status, "ok");
-  EXPECT_NE(a.values[1], b.values[1]);
+  expect_points_differ(s, 0, 1, 1);  // their final states are not one state
 }
 
 // Points whose runs all differ (a sweep over the step) run one by one: a block of lanes for one
@@ -171,12 +175,7 @@ TEST(SweepEnsemble, MegnoMapIsEvaluatePointsBits) {
       "[integrate]\nt_end = 40.0\n";
   const SweepFile s = newtop::sweep::load_sweep(write_file("megno.toml", sweep));
   expect_point_by_point(s);
-  // The map is not flat: the indicators differ between points.
-  const PointResult a = newtop::sweep::evaluate_point(s, 0),
-                    b = newtop::sweep::evaluate_point(s, 24);
-  ASSERT_EQ(a.status, "ok");
-  ASSERT_EQ(b.status, "ok");
-  EXPECT_NE(a.values[1], b.values[1]);
+  expect_points_differ(s, 0, 24, 1);  // the map is not flat
 }
 
 // MEGNO over the model's numbers (A across B, λ of both signs) in one ensemble tangent run, a
@@ -190,11 +189,7 @@ TEST(SweepEnsemble, MegnoOverModelParametersInOneRun) {
       "[integrate]\nt_end = 5.0\nmethod = \"splitting4\"\n";
   const SweepFile s = newtop::sweep::load_sweep(write_file("megno_params.toml", sweep));
   expect_point_by_point(s);
-  const PointResult a = newtop::sweep::evaluate_point(s, 0),
-                    b = newtop::sweep::evaluate_point(s, 1);
-  ASSERT_EQ(a.status, "ok");
-  ASSERT_EQ(b.status, "ok");
-  EXPECT_NE(a.values[0], b.values[0]);
+  expect_points_differ(s, 0, 1, 0);
 }
 
 }  // namespace
