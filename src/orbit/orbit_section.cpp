@@ -4,6 +4,8 @@
 #include "newtop/orbit/orbit_section.hpp"
 
 #include <cmath>
+#include <cstddef>
+#include <type_traits>
 
 #include "newtop/model/attitude.hpp"
 #include "newtop/phase/section_run.hpp"

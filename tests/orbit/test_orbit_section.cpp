@@ -10,7 +10,9 @@
 #include <numbers>
 #include <vector>
 
+#include "newtop/model/model.hpp"
 #include "newtop/orbit/orbit_section.hpp"
+#include "newtop/phase/section_run.hpp"
 #include "orbit_problems.hpp"
 
 namespace newtop {
@@ -95,8 +97,8 @@ TEST(OrbitSection, PlanarPitchCrossingsKeepThePitchIntegralAndRecurWithTheLibrat
 
 // A tumbling gyrostat on a circular orbit, on a surface that mixes the orbit normal and γ. The
 // crossings converge with the method's order: splitting4's differences between h, h/2 and h/4
-// shrink by 2⁴ = 16 (measured 15.995; the bracket 12–20 fails for an order 3 or 5 and for a
-// location not on the method's own solution, whose error would be set by the root-finder instead).
+// shrink by 2⁴ = 16 (measured 15.995; the bracket 12–20 fails for an order 3 or 5). A landing off
+// the method's own solution (e.g. by a lower-order step) is caught by the zero-rate test below.
 // The Casimirs n·n and γ·n: round-off of N ≤ 6e3 steps, 64ε√N = 1.1e-12 (measured 3e-14).
 TEST(OrbitSection, SameSectionWhenTheStepIsHalved) {
   const Body body = test::orbit_body();
@@ -146,6 +148,35 @@ TEST(OrbitSection, EllipticCrossingsAgreeBetweenTwoMethods) {
   }
   EXPECT_FALSE(a.drift.has_jacobi);
   EXPECT_LT(a.drift.gamma_normal, 64 * kOrbitEps * std::sqrt(2.5e3));  // measured 1.7e-14
+}
+
+// At ω0 = 0 (λ fixed) the orbit model is the fixed-centre model of spec §4 and its splitting the
+// same composition of the same sub-flows (OrbitLimits.ZeroRateSplittingIsTheFixedCentreSplitting):
+// the orbit section and the body section of `newtop section` must give the same crossings, up to
+// the round-off that separates the two steppers (1e-12 over T = 5, there): 1e-11 over T = 30
+// (measured 3e-14 over four crossings).
+TEST(OrbitSection, ZeroRateSectionIsTheFixedCentreSection) {
+  constexpr double kLambda = 1.7, kSameSection = 1e-11;
+  const Body body = test::orbit_body();
+  const CircularOrbitModel model(body, CircularOrbit::forced(0.0, kLambda));
+  const QuadraticModel fixed{body, QuadraticField::coulomb(0.0, kLambda)};
+  const OrbitState x0 = test::tumbling_state(body);
+  const char* surface = "gamma1 - 0.5*omega1 = 0.1";
+  const MethodSettings method = splitting("splitting4", 0.01);
+  const Section orbit = section(method, model, surface, x0, 0.0, 30.0);
+  std::vector<phase::Crossing> crossings;
+  phase::IntegralsDrift drift;
+  phase::section_orbit(method, fixed, phase::SurfaceFunction(phase::parse_surface(surface), body),
+                       {phase::Direction::up, 1000, false}, 0, State{x0.m, x0.gamma}, 0.0, 30.0,
+                       IntegrateOptions{}, crossings, drift);
+  ASSERT_GE(crossings.size(), 3u);
+  ASSERT_EQ(orbit.crossings.size(), crossings.size());
+  for (std::size_t i = 0; i < crossings.size(); ++i) {
+    EXPECT_NEAR(orbit.crossings[i].t, crossings[i].t, kSameSection) << i;
+    EXPECT_LT((orbit.crossings[i].x.m - crossings[i].x.m).cwiseAbs().maxCoeff(), kSameSection);
+    EXPECT_LT((orbit.crossings[i].x.gamma - crossings[i].x.gamma).cwiseAbs().maxCoeff(),
+              kSameSection);
+  }
 }
 
 // The orbital-frame coordinates: the planar pitch state's 3-2-1 yaw is Beletsky's θ and its

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// The section's observer and the run of one orbit on a BasicModel<F> (templates; section.hpp
-/// declares the run on a Model, compiled once in the library).
+/// The section's observer, generic in the state type (a body's State; the orbit model's
+/// OrbitState in orbit/orbit_section.hpp), and the run of one orbit on a BasicModel<F> (templates;
+/// section.hpp declares the run on a Model, compiled once in the library).
 
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
