@@ -26,6 +26,7 @@ struct LibrationArgs {
   std::string resonances = "1:2,1:1,3:2,2:1,5:2";
   std::optional<std::string> spin, out;
   int iterates = 200;
+  bool asymmetric = false;
   bool json = false;
 };
 
@@ -81,7 +82,9 @@ io::Json solution_json(const PeriodicSolution& s, double e) {
           {"trace", s.monodromy.trace()},
           {"stability", to_string(s.stability)},
           {"residual", s.residual},
-          {"max_deviation", s.max_deviation}};
+          {"max_deviation", s.max_deviation},
+          {"symmetry_distance", s.symmetry_distance},
+          {"symmetric", s.symmetry_distance <= kSymmetryTolerance}};
 }
 
 int run_guarded(const LibrationArgs& a) {
@@ -126,13 +129,21 @@ int run_guarded(const LibrationArgs& a) {
     throw_if_interrupted(0.0);
     for (const PeriodicSolution& s : periodic_solutions(problem, r))
       sols.push_back(solution_json(s, e));
-    res.push_back({{"resonance", std::to_string(r.p) + ":" + std::to_string(r.q)},
+    io::Json entry{{"resonance", std::to_string(r.p) + ":" + std::to_string(r.q)},
                    {"spin_ratio", ratio},
                    {"periods", r.periods},
                    {"half_turns", r.half_turns},
                    {"strength", resonance_strength(ratio, e)},
                    {"averaged_half_width", averaged_half_width(problem, ratio)},
-                   {"solutions", sols}});
+                   {"solutions", sols}};
+    if (a.asymmetric) {
+      io::Json asym = io::Json::array();
+      for (const PeriodicSolution& s : shoot_periodic_solutions(problem, r)) {
+        if (s.symmetry_distance > kSymmetryTolerance) asym.push_back(solution_json(s, e));
+      }
+      entry["asymmetric_solutions"] = asym;
+    }
+    res.push_back(entry);
   }
   io::Json section = io::Json::array();
   int chaotic = 0;
@@ -181,6 +192,12 @@ int run_guarded(const LibrationArgs& a) {
                 << "  trace = " << format_number(s["trace"].get<double>()) << "  "
                 << s["stability"].get<std::string>() << "\n";
     }
+    for (const auto& s : r.value("asymmetric_solutions", io::Json::array())) {
+      std::cout << "  asymmetric: theta(0) = " << format_number(s["theta0"].get<double>())
+                << "  theta'(0) = " << format_number(s["dtheta0"].get<double>())
+                << "  trace = " << format_number(s["trace"].get<double>()) << "  "
+                << s["stability"].get<std::string>() << "\n";
+    }
   }
   std::cout << starts.size() << " starts, " << a.iterates << " orbits each: " << chaotic
             << " chaotic (Lyapunov exponent > " << format_number(chaos_threshold(a.iterates))
@@ -215,6 +232,9 @@ const RegisterCommand reg{Command{
       sub.add_option("--spin", a->spin,
                      "LO:HI:N section starts at periapsis, theta = 0, spin rate in units of n");
       sub.add_option("--iterates", a->iterates, "orbits per start (default 200)");
+      sub.add_flag("--asymmetric", a->asymmetric,
+                   "also find periodic solutions without the symmetry assumption (2-D shooting "
+                   "from a 12 x 12 grid of starts)");
       sub.add_option("--out", a->out, "section CSV file");
       sub.add_flag("--json", a->json, "print one JSON object");
       return [a] { return run(*a); };

@@ -7,6 +7,9 @@
 #include <optional>
 #include <string>
 
+#include "newtop/integrate/method_settings.hpp"
+#include "newtop/io/orbit_scenario.hpp"
+
 namespace newtop::app {
 
 struct OrbitSimulateArgs {
@@ -15,6 +18,24 @@ struct OrbitSimulateArgs {
   std::optional<std::int64_t> every;
   bool json = false;
 };
+
+/// As io::resolve_method: the command line's method, step or tolerance wins over the file's;
+/// checked by validate_orbit_method.
+MethodSettings orbit_method(const io::OrbitScenario& sc, const std::optional<std::string>& method,
+                            std::optional<double> step, std::optional<double> tol);
+/// --t-end over [integrate] t_end: finite and > t0, else InputError.
+double orbit_t_end(const io::OrbitScenario& sc, std::optional<double> t_end);
+
+/// newtop section on an orbit scenario (docs/section.md "Orbit scenarios"); the surface,
+/// direction and crossings already checked by the caller.
+struct OrbitSectionArgs {
+  std::string scenario, surface, direction;
+  std::optional<double> t_end, step, tol;
+  std::optional<std::string> method, out;
+  std::int64_t crossings = 1000;
+  bool json = false;
+};
+int orbit_section_command(const OrbitSectionArgs& a);
 
 int orbit_simulate(const std::string& path, const OrbitSimulateArgs& a);
 int orbit_integrals(const std::string& path, bool json);

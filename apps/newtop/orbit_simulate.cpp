@@ -16,16 +16,30 @@
 namespace newtop::app {
 namespace {
 
-/// As io::resolve_method: the command line's method, step or tolerance wins over the file's.
-MethodSettings orbit_method(const io::OrbitScenario& sc, const OrbitSimulateArgs& a) {
+struct Tracker {
+  OrbitValues initial, max_drift;
+  double max_geometric = 0.0;  ///< max |γ·γ − γ0·γ0|, the geometric integral of spec §5
+  void observe(const OrbitValues& v) {
+    max_geometric =
+        std::max(max_geometric, std::abs(v.casimirs.gamma_gamma - initial.casimirs.gamma_gamma));
+    max_drift.integral = std::max(max_drift.integral, std::abs(v.integral - initial.integral));
+    max_drift.casimir = std::max(max_drift.casimir, v.casimir);
+  }
+};
+
+}  // namespace
+
+MethodSettings orbit_method(const io::OrbitScenario& sc, const std::optional<std::string>& method,
+                            std::optional<double> cli_step, std::optional<double> cli_tol) {
   const auto& f = sc.integrate;
-  const std::optional<double> step = a.step ? a.step : (a.tol ? std::nullopt : f.step);
-  const std::optional<double> tol = a.tol ? a.tol : (a.step ? std::nullopt : f.tol);
+  const std::optional<double> step = cli_step ? cli_step : (cli_tol ? std::nullopt : f.step);
+  const std::optional<double> tol = cli_tol ? cli_tol : (cli_step ? std::nullopt : f.tol);
   MethodSettings m;
-  m.name = a.method          ? *a.method
-           : a.step || a.tol ? std::string(a.step ? kDefaultFixedMethod : kDefaultAdaptiveMethod)
-           : f.method        ? *f.method
-                             : std::string(step ? kDefaultFixedMethod : kDefaultAdaptiveMethod);
+  m.name = method ? *method
+           : cli_step || cli_tol
+               ? std::string(cli_step ? kDefaultFixedMethod : kDefaultAdaptiveMethod)
+           : f.method ? *f.method
+                      : std::string(step ? kDefaultFixedMethod : kDefaultAdaptiveMethod);
   if (m.name == "rkf78") {
     if (!tol) throw InputError(sc.source + ": tol: method rkf78 needs --tol or [integrate] tol");
     m.abs_tol = m.rel_tol = *tol;
@@ -40,28 +54,20 @@ MethodSettings orbit_method(const io::OrbitScenario& sc, const OrbitSimulateArgs
   return m;
 }
 
-struct Tracker {
-  OrbitValues initial, max_drift;
-  double max_geometric = 0.0;  ///< max |γ·γ − γ0·γ0|, the geometric integral of spec §5
-  void observe(const OrbitValues& v) {
-    max_geometric =
-        std::max(max_geometric, std::abs(v.casimirs.gamma_gamma - initial.casimirs.gamma_gamma));
-    max_drift.integral = std::max(max_drift.integral, std::abs(v.integral - initial.integral));
-    max_drift.casimir = std::max(max_drift.casimir, v.casimir);
-  }
-};
-
-}  // namespace
-
-int orbit_simulate(const std::string& path, const OrbitSimulateArgs& a) {
-  const io::OrbitScenario sc = io::load_orbit_scenario(path);
-  const MethodSettings method = orbit_method(sc, a);
-  const std::optional<double> t_end = a.t_end ? a.t_end : sc.integrate.t_end;
+double orbit_t_end(const io::OrbitScenario& sc, std::optional<double> cli_t_end) {
+  const std::optional<double> t_end = cli_t_end ? cli_t_end : sc.integrate.t_end;
   if (!t_end) throw InputError(sc.source + ": t_end: missing: give --t-end or [integrate] t_end");
   if (!std::isfinite(*t_end) || !(*t_end > sc.integrate.t0)) {
     throw InputError("t_end: expected a finite time > t0 = " + format_number(sc.integrate.t0) +
                      ", found " + format_number(*t_end));
   }
+  return *t_end;
+}
+
+int orbit_simulate(const std::string& path, const OrbitSimulateArgs& a) {
+  const io::OrbitScenario sc = io::load_orbit_scenario(path);
+  const MethodSettings method = orbit_method(sc, a.method, a.step, a.tol);
+  const std::optional<double> t_end = orbit_t_end(sc, a.t_end);
   const std::int64_t every = a.every.value_or(sc.output.every);
   if (every < 1)
     throw InputError("--every: expected an integer >= 1, found " + std::to_string(every));

@@ -10,7 +10,9 @@
 #include "integration_options.hpp"
 #include "interrupt.hpp"
 #include "newtop/io/json.hpp"
+#include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
+#include "orbit_commands.hpp"
 #include "summary.hpp"
 
 namespace newtop::app {
@@ -77,6 +79,17 @@ int run(const SectionArgs& a) {
   if (a.crossings < 1) {
     throw InputError("--crossings: expected an integer >= 1, found " + std::to_string(a.crossings));
   }
+  if (io::is_orbit_scenario(a.scenario)) {
+    if (a.orbits) {
+      throw InputError(
+          "--orbits: expected a body scenario, found an orbit scenario ([orbit]): seeded portraits "
+          "on the Jacobi level are not available; run one scenario per start");
+    }
+    return orbit_section_command({a.scenario, a.surface, a.direction, a.integration.t_end,
+                                  a.integration.step, a.integration.tol, a.integration.method,
+                                  a.out, a.crossings, a.json});
+  }
+  phase::require_body_surface(surface);
   const io::Scenario sc = load_body_scenario(a.scenario);
   const RunSettings run = resolve_run(sc, a.integration);
   std::optional<phase::Levels> levels;
@@ -168,20 +181,22 @@ int run(const SectionArgs& a) {
 
 const RegisterCommand reg{Command{
     "section",
-    "Poincare section: the crossings of the trajectory with a surface g(omega, gamma) = 0",
+    "Poincare section: the crossings of the trajectory with a surface g(omega, gamma[, normal]) = "
+    "0",
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<SectionArgs>();
       sub.add_option("scenario", a->scenario, "scenario file (TOML)")->required();
       sub.add_option("--surface", a->surface,
                      "affine surface, e.g. 'gamma3 = 0' or 'gamma1 + 0.5*gamma2 = 0.1' "
-                     "(omega1..3, m1..3, gamma1..3)")
+                     "(omega1..3, m1..3, gamma1..3; normal1..3 on an orbit scenario)")
           ->required();
       sub.add_option("--direction", a->direction, "up (default), down or both");
       sub.add_option("--crossings", a->crossings,
                      "stop after N crossings per orbit (default 1000)");
       auto* orbits = sub.add_option("--orbits", a->orbits,
                                     "phase portrait: K orbits seeded on the surface, on the "
-                                    "scenario's energy and area levels (docs/section.md)");
+                                    "scenario's energy and area levels (docs/section.md; body "
+                                    "scenarios only)");
       sub.add_option("--energy", a->energy, "energy level of the seeded orbits")->needs(orbits);
       sub.add_option("--area", a->area, "area level m.gamma of the seeded orbits")->needs(orbits);
       add_integration_options(sub, a->integration);

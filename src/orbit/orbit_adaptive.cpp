@@ -122,7 +122,24 @@ OrbitOutcome run_adaptive(const Rhs& f, OrbitState x, double t0, double t1,
   return out;
 }
 
+/// One step of the propagated formula of the pair that run_adaptive controls.
+template <class Rhs>
+OrbitState one_step(const Rhs& f, const OrbitState& x, double t, double h) {
+  auto system = [&](const Ode9& y, Ode9& dydt, double s) { dydt = to_ode(f(from_ode(y), s)); };
+  Ode9 y = to_ode(x);
+  odeint::runge_kutta_fehlberg78<Ode9>().do_step(system, y, t, h);
+  return from_ode(y);
+}
+
 }  // namespace
+
+OrbitState rkf78_step(const CircularOrbitModel& model, const OrbitState& x, double t, double h) {
+  return one_step([&](const OrbitState& s, double) { return rhs(model, s); }, x, t, h);
+}
+
+OrbitState rkf78_step(const EllipticOrbitModel& model, const OrbitState& x, double nu, double h) {
+  return one_step([&](const OrbitState& s, double v) { return rhs(model, s, v); }, x, nu, h);
+}
 
 OrbitOutcome integrate_adaptive(const CircularOrbitModel& model, OrbitState x, double t0, double t1,
                                 const OrbitAdaptiveOptions& options,

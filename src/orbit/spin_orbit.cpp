@@ -61,9 +61,10 @@ void floquet(PeriodicSolution& s) {
                                                     : FloquetStability::parabolic;
 }
 
-/// The full period from (θ0, θ′0): monodromy, periodicity residual and deviation.
-PeriodicSolution complete(const PitchProblem& p, const SpinOrbitResonance& r, double theta0,
-                          double dtheta0) {
+}  // namespace
+
+PeriodicSolution periodic_solution_at(const PitchProblem& p, const SpinOrbitResonance& r,
+                                      double theta0, double dtheta0) {
   PeriodicSolution s;
   s.resonance = r;
   s.theta0 = theta0;
@@ -82,10 +83,16 @@ PeriodicSolution complete(const PitchProblem& p, const SpinOrbitResonance& r, do
   s.monodromy = phi;
   s.residual = (x - Vec2(theta0 + r.half_turns * kPi, dtheta0)).norm();
   floquet(s);
+  // The reversibility points ν = πj of the period: θ there a multiple of π/2 for a symmetric
+  // solution (docs/orbit.md §9).
+  Vec2 y(theta0, dtheta0);
+  s.symmetry_distance = std::abs(std::remainder(theta0, kPi / 2));
+  for (int j = 1; j < 2 * r.periods; ++j) {
+    y = pitch_advance(p, y, kPi * (j - 1), kPi * j);
+    s.symmetry_distance = std::min(s.symmetry_distance, std::abs(std::remainder(y[0], kPi / 2)));
+  }
   return s;
 }
-
-}  // namespace
 
 std::vector<PeriodicSolution> periodic_solutions(const PitchProblem& p, const SpinOrbitResonance& r,
                                                  const ResonanceSearch& search) {
@@ -122,7 +129,7 @@ std::vector<PeriodicSolution> periodic_solutions(const PitchProblem& p, const Sp
           root -= step;
           if (std::abs(step) < kNewtonStop) break;
         }
-        found.push_back(complete(p, r, theta0, root));
+        found.push_back(periodic_solution_at(p, r, theta0, root));
       }
       s_prev = s_next;
       f_prev = f_next;

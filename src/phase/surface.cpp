@@ -9,7 +9,7 @@
 namespace newtop::phase {
 namespace {
 
-constexpr std::string_view kComponents = "a component (omega1..3, m1..3, gamma1..3)";
+constexpr std::string_view kComponents = "a component (omega1..3, m1..3, gamma1..3, normal1..3)";
 
 class Parser {
  public:
@@ -18,7 +18,7 @@ class Parser {
   Surface parse() {
     Surface out;
     out.text = std::string(s_);
-    std::array<bool, 9> seen{};
+    std::array<bool, 12> seen{};
     bool first = true;
     for (;;) {
       skip_space();
@@ -42,7 +42,7 @@ class Parser {
       const int k = component();
       if (seen[k]) fail("each component once", std::string(word_));
       seen[k] = true;
-      Vec3& a = k < 3 ? out.a_omega : k < 6 ? out.a_m : out.a_gamma;
+      Vec3& a = k < 3 ? out.a_omega : k < 6 ? out.a_m : k < 9 ? out.a_gamma : out.a_normal;
       a[k % 3] = sign * coef;
       skip_space();
       if (peek() == '=') break;
@@ -53,7 +53,8 @@ class Parser {
     out.c = number();
     skip_space();
     if (pos_ != s_.size()) fail("the end of the expression after the number");
-    if (out.a_omega.isZero(0.0) && out.a_m.isZero(0.0) && out.a_gamma.isZero(0.0)) {
+    if (out.a_omega.isZero(0.0) && out.a_m.isZero(0.0) && out.a_gamma.isZero(0.0) &&
+        out.a_normal.isZero(0.0)) {
       throw InputError(std::string(field_) +
                        ": expected at least one nonzero coefficient, found '" + out.text + "'");
     }
@@ -93,8 +94,8 @@ class Parser {
     const std::size_t start = pos_;
     while (pos_ < s_.size() && std::isalnum(static_cast<unsigned char>(s_[pos_]))) ++pos_;
     word_ = s_.substr(start, pos_ - start);
-    static constexpr std::array<std::string_view, 3> kNames{"omega", "m", "gamma"};
-    for (int g = 0; g < 3; ++g) {
+    static constexpr std::array<std::string_view, 4> kNames{"omega", "m", "gamma", "normal"};
+    for (int g = 0; g < 4; ++g) {
       for (int i = 0; i < 3; ++i) {
         if (word_ == std::string(kNames[g]) + std::to_string(i + 1)) return 3 * g + i;
       }
@@ -113,7 +114,16 @@ Surface parse_surface(std::string_view text, std::string_view field) {
   return Parser(text, field).parse();
 }
 
-SurfaceFunction::SurfaceFunction(const Surface& s, const Body& body) {
+void require_body_surface(const Surface& s, std::string_view field) {
+  if (!s.has_normal()) return;
+  throw InputError(std::string(field) +
+                   ": expected components omega1..3, m1..3, gamma1..3 on a body scenario, found '" +
+                   s.text + "' (normal1..3, the orbit normal, only on an orbit scenario)");
+}
+
+SurfaceFunction::SurfaceFunction(const Surface& s, const Body& body, bool with_normal) {
+  if (!with_normal) require_body_surface(s);
+  b_normal = s.a_normal;
   const Vec3 w = s.a_omega.cwiseQuotient(body.inertia());  // a_ω·I⁻¹(m − k)
   b_m = s.a_m + w;
   b_gamma = s.a_gamma;

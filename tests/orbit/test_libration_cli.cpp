@@ -77,6 +77,33 @@ TEST(LibrationCli, JsonAndCsvAgreeWithTheLibrary) {
   std::filesystem::remove(csv);
 }
 
+// --asymmetric adds each resonance's asymmetric solutions (2-D shooting) and leaves the symmetric
+// list as it was; every solution says whether it is symmetric.
+TEST(LibrationCli, AsymmetricSolutionsAreAddedBesideTheSymmetricOnes) {
+  const auto r = test::run_newtop("libration " + test::example_path("libration_asymmetric.toml") +
+                                      " --resonances 1:2 --asymmetric --iterates 2 --json",
+                                  test::Stderr::separate);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& res = j["resonances"][0];
+  const PitchProblem p = pitch_problem(0.1, j["k"].get<double>());
+  ASSERT_EQ(res["solutions"].size(), periodic_solutions(p, resonance(1, 2)).size());
+  for (const auto& s : res["solutions"]) EXPECT_EQ(s["symmetric"], true);
+  ASSERT_GE(res["asymmetric_solutions"].size(), 1u);
+  for (const auto& s : res["asymmetric_solutions"]) {
+    EXPECT_EQ(s["symmetric"], false);
+    EXPECT_GT(s["symmetry_distance"].get<double>(), 0.1);
+    EXPECT_LT(s["residual"].get<double>(), 1e-10);
+    EXPECT_NEAR(std::abs(s["theta0"].get<double>()), 1.459145, 1e-6);
+  }
+  const auto plain =
+      test::run_newtop("libration " + test::example_path("libration_asymmetric.toml") +
+                           " --resonances 1:2 --iterates 2 --json",
+                       test::Stderr::separate);
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_FALSE(nlohmann::json::parse(plain.out)["resonances"][0].contains("asymmetric_solutions"));
+}
+
 TEST(LibrationCli, BadInputIsOneLineAndExitTwo) {
   const std::string ex = test::example_path("orbit_spin_orbit.toml");
   for (const std::string& args :

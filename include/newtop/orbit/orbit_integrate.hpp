@@ -111,6 +111,12 @@ OrbitOutcome integrate_adaptive(const EllipticOrbitModel& model, OrbitState x, d
                                 double nu1, const OrbitAdaptiveOptions& options,
                                 const OrbitObserver& observer = {});
 
+/// One step of Fehlberg 7(8)'s propagated formula from (t, x) by h (from ν by h on an elliptic
+/// orbit) without error control: the formula every accepted step of integrate_adaptive applies
+/// (the right-hand side evaluated afresh at x). Event location lands on the solution with it.
+OrbitState rkf78_step(const CircularOrbitModel& model, const OrbitState& x, double t, double h);
+OrbitState rkf78_step(const EllipticOrbitModel& model, const OrbitState& x, double nu, double h);
+
 /// Checks that a method runs on the orbit model: a splitting composition of composition_tables()
 /// (with settings.step > 0) or "rkf78" (with tolerances > 0); throws InputError naming `method`
 /// (listing the names that do) or the step or tolerance otherwise.

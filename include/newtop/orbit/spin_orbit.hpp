@@ -6,10 +6,12 @@
 /// under a half turn about z). Symmetric solutions (θ(−ν) = 2θ0 − θ(ν), θ0 ∈ {0, π/2}) are found by
 /// bracketing θ(πN) − θ0 − Mπ/2 in θ′(0) and solving with TOMS 748, then Newton's method on the
 /// same condition with the variational equation; the monodromy matrix over 2πN gives the Floquet
-/// multipliers. The periapsis section samples (θ mod π, θ′) every orbit, with a finite-time
-/// Lyapunov exponent per start.
+/// multipliers. Solutions without the symmetry are found by 2-D shooting (Newton's method on both
+/// initial values; spin_orbit_shooting.cpp). The periapsis section samples (θ mod π, θ′) every
+/// orbit, with a finite-time Lyapunov exponent per start.
 
 #include <complex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,14 +38,24 @@ const char* to_string(FloquetStability s);
 /// One periodic solution of the resonance.
 struct PeriodicSolution {
   SpinOrbitResonance resonance;
-  double theta0 = 0.0;  ///< θ(0) ∈ {0, π/2}: the reversibility line it starts on (at periapsis)
+  /// θ(0) at periapsis: ∈ {0, π/2} (the reversibility line it starts on) for the symmetric
+  /// search; any value for the 2-D shooting (reduced to [−π/2, π/2)).
+  double theta0 = 0.0;
   double dtheta0 = 0.0;               ///< θ′(0)
   Mat2 monodromy = Mat2::Identity();  ///< Φ(2πN, 0)
   std::complex<double> multipliers[2];
   FloquetStability stability = FloquetStability::stable;
   double residual = 0.0;  ///< |x(2πN) − x(0) − (Mπ, 0)|, the periodicity check over a full period
   double max_deviation = 0.0;  ///< max over ν ∈ [0, 2πN] of |θ(ν) − θ0 − Mν/(2N)|
+  /// min over j = 0 … 2N − 1 of the distance of θ(πj) to the nearest multiple of π/2: zero (to the
+  /// integration's accuracy) exactly when the solution is symmetric (spin_orbit_shooting.cpp).
+  double symmetry_distance = 0.0;
 };
+
+/// The full period from (θ(0), θ′(0)) = (theta0, dtheta0): monodromy, multipliers, periodicity
+/// residual, deviation and symmetry distance.
+PeriodicSolution periodic_solution_at(const PitchProblem& p, const SpinOrbitResonance& r,
+                                      double theta0, double dtheta0);
 
 /// Search settings: θ′(0) is scanned over M/(2N) ± half_window in `samples` steps on each line.
 struct ResonanceSearch {
@@ -54,6 +66,37 @@ struct ResonanceSearch {
 /// Every symmetric periodic solution of the resonance found in the scan window, on both lines.
 std::vector<PeriodicSolution> periodic_solutions(const PitchProblem& p, const SpinOrbitResonance& r,
                                                  const ResonanceSearch& search = {});
+
+/// 2-D shooting without the symmetry assumption (docs/orbit.md §9): Newton's method on
+/// F(x0) = x(2πN; x0) − x0 − (Mπ, 0) over both initial values x0 = (θ(0), θ′(0)), with the
+/// Jacobian Φ(2πN, 0) − I from the variational equation; steps longer than `max_step` are
+/// shortened to it, then halved until |F| decreases (backtracking). Converged when max |F| ≤
+/// tolerance; nullopt when it does not converge within max_iterations, no halving decreases |F|,
+/// or Φ − I is singular (a multiplier 1).
+struct ShootingSettings {
+  int max_iterations = 40;
+  double tolerance = 1e-11;
+  double max_step = 0.3;
+};
+std::optional<PeriodicSolution> shoot_periodic(const PitchProblem& p, const SpinOrbitResonance& r,
+                                               const Vec2& guess,
+                                               const ShootingSettings& settings = {});
+
+/// A solution is called symmetric when its symmetry_distance is below this (the shooting and
+/// integration tolerances are 1e-11 and 1e-13; an asymmetric solution's distance is O(1)).
+inline constexpr double kSymmetryTolerance = 1e-7;
+
+/// Every periodic solution that 2-D shooting reaches from a grid of starts: θ(0) at `theta_samples`
+/// points of [−π/2, π/2), θ′(0) at `rate_samples` points of M/(2N) ± half_window (0: as in
+/// ResonanceSearch); duplicates (θ(0) mod π and θ′(0) within 1e-7) kept once.
+struct ShootingGrid {
+  int theta_samples = 12;
+  int rate_samples = 12;
+  double half_window = 0.0;
+};
+std::vector<PeriodicSolution> shoot_periodic_solutions(const PitchProblem& p,
+                                                       const SpinOrbitResonance& r,
+                                                       const ShootingGrid& grid = {});
 
 /// Goldreich & Peale (1966) strength H(p, e) of the resonance p (spin/orbit ratio, a multiple of
 /// 1/2): the Fourier coefficient (a/R)³ e^{2i(ν − pM)} averaged over the mean anomaly M, by the

@@ -31,11 +31,15 @@ const char* to_string(Direction d);
 /// Parses "up", "down" or "both"; InputError naming `field` otherwise.
 Direction parse_direction(std::string_view s, std::string_view field = "--direction");
 
-struct Crossing {
+/// A located crossing of orbit `orbit` at the independent variable t (the time; the true anomaly
+/// on an elliptic orbit) with the state x (a body's State, or an OrbitState).
+template <class X>
+struct BasicCrossing {
   int orbit = 0;
   double t = 0.0;
-  State x;
+  X x;
 };
+using Crossing = BasicCrossing<State>;
 
 /// The Andoyer–Deprit variables of the reduced motion (docs/section.md): G = |m|, L = m3,
 /// l = atan2(m1, m2) (m1 = √(G² − L²) sin l, m2 = √(G² − L²) cos l), and g the angle, in the

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// The section's observer and the run of one orbit on a BasicModel<F> (templates; section.hpp
-/// declares the run on a Model, compiled once in the library).
+/// The section's observer, generic in the state type (a body's State; the orbit model's
+/// OrbitState in orbit/orbit_section.hpp), and the run of one orbit on a BasicModel<F> (templates;
+/// section.hpp declares the run on a Model, compiled once in the library).
 
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
@@ -21,28 +22,30 @@ namespace detail {
 
 struct SectionDone {};
 
-/// The observer: watches g, locates crossings, keeps the integrals' drift.
-template <class Map, class M>
+/// The observer, generic in the state type X (a body's State, an OrbitState): watches g at the
+/// accepted steps, locates crossings and hands every accepted state and crossing to `watch` (the
+/// integrals' drift). `map(t, x, τ)` is the method's one-step map from (t, x) by τ; `g(x)` and
+/// `g.scale(x)` the surface function and the size of its terms.
+template <class X, class Map, class G, class Watch>
 struct SectionObserver {
-  SectionObserver(Map m, const M& mod, const SurfaceFunction& gf, const SectionSettings& st, int k,
-                  std::vector<Crossing>& o, IntegralsDrift& d, SectionRun& r)
-      : map(std::move(m)), model(mod), g(gf), settings(st), orbit(k), out(o), drift(d), run(r) {}
+  SectionObserver(Map m, const G& gf, Watch w, const SectionSettings& st, int k,
+                  std::vector<BasicCrossing<X>>& o, SectionRun& r)
+      : map(std::move(m)), g(gf), watch(std::move(w)), settings(st), orbit(k), out(o), run(r) {}
   Map map;
-  const M& model;
-  const SurfaceFunction& g;
+  const G& g;
+  Watch watch;
   const SectionSettings& settings;
   int orbit;
-  std::vector<Crossing>& out;
-  IntegralsDrift& drift;
+  std::vector<BasicCrossing<X>>& out;
   SectionRun& run;
   std::int64_t found = 0;
   bool first = true;
   double t_prev = 0, g_prev = 0;
-  State x_prev;
+  X x_prev;
 
-  void record(double t, const State& x) {
+  void record(double t, const X& x) {
     out.push_back({orbit, t, x});
-    drift.observe(integrals(model, x));
+    watch(x);
     const double r = std::abs(g(x));
     run.max_residual = std::max(run.max_residual, r);
     const double sc = g.scale(x);
@@ -62,8 +65,8 @@ struct SectionObserver {
     }
   }
 
-  void operator()(double t, const State& x) {
-    drift.observe(integrals(model, x));
+  void operator()(double t, const X& x) {
+    watch(x);
     const double gx = g(x);
     if (first) {
       first = false;
@@ -82,9 +85,9 @@ struct SectionObserver {
     g_prev = gx;
   }
 
-  void locate(double t, const State& x) {
+  void locate(double t, const X& x) {
     const double h = t - t_prev;
-    auto f = [&](double tau) { return g(map(model, x_prev, tau)); };
+    auto f = [&](double tau) { return g(map(t_prev, x_prev, tau)); };
     const double f_end = f(h);
     if (!((g_prev < 0) == (f_end > 0) || f_end == 0)) {
       record(t, x);  // no bracket in the map's own values (g at round-off): the step's end
@@ -93,7 +96,7 @@ struct SectionObserver {
     std::uintmax_t iters = 100;
     const auto tol = boost::math::tools::eps_tolerance<double>(std::numeric_limits<double>::digits);
     const auto r = boost::math::tools::toms748_solve(f, 0.0, h, g_prev, f_end, tol, iters);
-    const State a = map(model, x_prev, r.first), b = map(model, x_prev, r.second);
+    const X a = map(t_prev, x_prev, r.first), b = map(t_prev, x_prev, r.second);
     if (std::abs(g(a)) <= std::abs(g(b))) {
       record(t_prev + r.first, a);
     } else {
@@ -101,6 +104,26 @@ struct SectionObserver {
     }
   }
 };
+
+/// Runs `drive(observer)` (an integration calling observer(t, x) at its start and every accepted
+/// step) with the section's observer; stops at max_crossings. `outcome(t, x)` records the last
+/// state seen; `drive` returns the run's status.
+template <class X, class Map, class G, class Watch, class Drive, class Seen>
+bool observe_section(Map map, const G& g, Watch watch, const SectionSettings& settings, int orbit,
+                     std::vector<BasicCrossing<X>>& out, SectionRun& run, Drive&& drive,
+                     Seen&& seen) {
+  SectionObserver<X, Map, G, Watch> obs(std::move(map), g, std::move(watch), settings, orbit, out,
+                                        run);
+  try {
+    drive([&](double t, const X& x) {
+      seen(t, x);
+      obs(t, x);
+    });
+  } catch (const SectionDone&) {
+    return true;
+  }
+  return false;
+}
 
 }  // namespace detail
 
@@ -116,17 +139,20 @@ SectionRun section_orbit(const MethodSettings& method, const BasicModel<F>& mode
   SectionRun run;
   with_stepper(method, [&](auto& s) {
     using S = std::decay_t<decltype(s)>;
-    detail::SectionObserver<OneStepMap<S>, BasicModel<F>> obs(OneStepMap<S>(s), model, g, settings,
-                                                              orbit, out, drift, run);
-    auto observer = [&](double t, const State& x) {
+    auto map = [m = OneStepMap<S>(s), &model](double, const State& x, double tau) mutable {
+      return m(model, x, tau);
+    };
+    auto watch = [&](const State& x) { drift.observe(integrals(model, x)); };
+    auto seen = [&](double t, const State& x) {
       if (on_step) on_step(t);
       run.outcome.t = t;
       run.outcome.state = x;
-      obs(t, x);
     };
-    try {
+    auto drive = [&](auto&& observer) {
       run.outcome = integrate(s, model, x0, t0, t1, options, observer);
-    } catch (const detail::SectionDone&) {
+    };
+    if (detail::observe_section<State>(std::move(map), g, watch, settings, orbit, out, run, drive,
+                                       seen)) {
       run.by_crossings = true;
       run.outcome.status = Status::finished;
     }
