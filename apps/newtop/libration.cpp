@@ -89,12 +89,21 @@ io::Json solution_json(const PeriodicSolution& s, double e) {
 
 int run_guarded(const LibrationArgs& a) {
   const io::OrbitScenario sc = io::load_orbit_scenario(a.scenario);
-  const auto* orbit = std::get_if<EllipticOrbit>(&sc.orbit);
-  if (!orbit) {
-    throw InputError(sc.source +
-                     ": [orbit] kind: expected \"elliptic\" for newtop libration, "
-                     "found \"circular\" (give kind = \"elliptic\" with eccentricity = 0)");
+  // A circular Kepler orbit is the ellipse e = 0, its true anomaly counted from the start; a forced
+  // one (λ ≠ 3ω0²) is no Kepler orbit and has no Beletsky equation.
+  std::optional<EllipticOrbit> ellipse;
+  if (const auto* e = std::get_if<EllipticOrbit>(&sc.orbit)) {
+    ellipse = *e;
+  } else {
+    const auto& c = std::get<CircularOrbit>(sc.orbit);
+    if (!(c.rate > 0) || c.lambda_ != 3.0 * c.rate * c.rate) {
+      throw InputError(sc.source + ": [orbit]: expected a Kepler orbit (lambda = 3 rate^2) for " +
+                       "newtop libration, found rate " + format_number(c.rate) + " and lambda " +
+                       format_number(c.lambda_));
+    }
+    ellipse = EllipticOrbit::from_mean_motion(c.rate, 0.0, 0.0);
   }
+  const EllipticOrbit* orbit = &*ellipse;
   const PitchProblem problem = pitch_problem(sc.body, *orbit);
   const std::vector<SpinOrbitResonance> resonances = parse_resonances(a.resonances);
   if (a.iterates < 1 || a.iterates > 100000) {

@@ -104,6 +104,35 @@ TEST(LibrationCli, AsymmetricSolutionsAreAddedBesideTheSymmetricOnes) {
   EXPECT_FALSE(nlohmann::json::parse(plain.out)["resonances"][0].contains("asymmetric_solutions"));
 }
 
+// A circular Kepler orbit is the ellipse e = 0 (ν counted from the start): the same resonances,
+// solutions and section, number for number, as the scenario written with kind = "elliptic".
+TEST(LibrationCli, CircularOrbitIsTheEllipseOfEccentricityZero) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string tag = std::to_string(::getpid());
+  const std::string body = "[body]\ninertia = [0.314, 0.474, 0.542]\n";
+  const std::string initial = "[initial]\neuler_321 = [0.3, 0.0, 0.0]\n";
+  const std::string circular = (dir / ("circular_" + tag + ".toml")).string();
+  const std::string elliptic = (dir / ("elliptic_" + tag + ".toml")).string();
+  std::ofstream(circular) << body << "[orbit]\nkind = \"circular\"\nrate = 1.0\n" << initial;
+  std::ofstream(elliptic) << body
+                          << "[orbit]\nkind = \"elliptic\"\nmu = 1.0\nsemi_major_axis = 1.0\n"
+                             "eccentricity = 0.0\n"
+                          << initial;
+  const std::string args = " --resonances 1:1,2:1 --iterates 20 --json";
+  const auto c = test::run_newtop("libration " + circular + args, test::Stderr::separate);
+  const auto e = test::run_newtop("libration " + elliptic + args, test::Stderr::separate);
+  ASSERT_EQ(c.code, 0) << c.err;
+  ASSERT_EQ(e.code, 0) << e.err;
+  auto jc = nlohmann::json::parse(c.out), je = nlohmann::json::parse(e.out);
+  ASSERT_EQ(jc["resonances"][0]["solutions"].size(), je["resonances"][0]["solutions"].size());
+  EXPECT_GE(jc["resonances"][0]["solutions"].size(), 1u);
+  jc.erase("scenario");
+  je.erase("scenario");
+  EXPECT_EQ(jc, je);
+  std::filesystem::remove(circular);
+  std::filesystem::remove(elliptic);
+}
+
 TEST(LibrationCli, BadInputIsOneLineAndExitTwo) {
   const std::string ex = test::example_path("orbit_spin_orbit.toml");
   for (const std::string& args :
