@@ -61,8 +61,8 @@ TEST(Hessian, AgainstHighPrecisionFromNearToFar) {
 }
 
 // The moment and its derivative along δ in one call (a kick with one tangent vector): the moment
-// bit for bit as moment(), the derivative against the high-precision Jacobian applied to δ, with the
-// Jacobian's tolerances relative to |∂L/∂γ| |δ|.
+// bit for bit as moment(), the derivative against the high-precision Jacobian applied to δ, with
+// the Jacobian's tolerances relative to |∂L/∂γ| |δ|.
 TEST(Hessian, MomentWithDerivativeAlongOneVector) {
   const double mu = 3.7;
   const Vec3 deltas[] = {Vec3(1.0, 0.0, 0.0), Vec3(-0.2, 0.7, 0.4), kGamma, Vec3(1e-3, 2.0, -5.0)};
