@@ -91,7 +91,10 @@ int orbit_section_command(const OrbitSectionArgs& a) {
                         drift, throw_if_interrupted);
     }
   } catch (const Interrupted& e) {
-    std::cerr << "newtop: interrupted by " << signal_name(e.signal)
+    // The independent variable: t on a circular orbit, the true anomaly on an ellipse.
+    const bool circular = std::holds_alternative<CircularOrbit>(sc.orbit);
+    std::cerr << "newtop: interrupted by " << signal_name(e.signal) << " at "
+              << (circular ? "t = " : "nu = ") << format_number(e.t)
               << (a.out ? "; the output file was not written" : "") << '\n';
     return 128 + e.signal;
   }
