@@ -87,34 +87,33 @@ io::Json solution_json(const PeriodicSolution& s, double e) {
           {"symmetric", s.symmetry_distance <= kSymmetryTolerance}};
 }
 
+// A circular Kepler orbit is the ellipse e = 0, its true anomaly counted from the start; a forced
+// one (λ ≠ 3ω0²) is no Kepler orbit and has no Beletsky equation.
+EllipticOrbit pitch_orbit(const io::OrbitScenario& sc) {
+  if (const auto* e = std::get_if<EllipticOrbit>(&sc.orbit)) return *e;
+  const auto& c = std::get<CircularOrbit>(sc.orbit);
+  if (!(c.rate > 0) || c.lambda_ != 3.0 * c.rate * c.rate) {
+    throw InputError(sc.source + ": [orbit]: expected a Kepler orbit (lambda = 3 rate^2) for " +
+                     "newtop libration, found rate " + format_number(c.rate) + " and lambda " +
+                     format_number(c.lambda_));
+  }
+  return EllipticOrbit::from_mean_motion(c.rate, 0.0, 0.0);
+}
+
 int run_guarded(const LibrationArgs& a) {
   const io::OrbitScenario sc = io::load_orbit_scenario(a.scenario);
-  // A circular Kepler orbit is the ellipse e = 0, its true anomaly counted from the start; a forced
-  // one (λ ≠ 3ω0²) is no Kepler orbit and has no Beletsky equation.
-  std::optional<EllipticOrbit> ellipse;
-  if (const auto* e = std::get_if<EllipticOrbit>(&sc.orbit)) {
-    ellipse = *e;
-  } else {
-    const auto& c = std::get<CircularOrbit>(sc.orbit);
-    if (!(c.rate > 0) || c.lambda_ != 3.0 * c.rate * c.rate) {
-      throw InputError(sc.source + ": [orbit]: expected a Kepler orbit (lambda = 3 rate^2) for " +
-                       "newtop libration, found rate " + format_number(c.rate) + " and lambda " +
-                       format_number(c.lambda_));
-    }
-    ellipse = EllipticOrbit::from_mean_motion(c.rate, 0.0, 0.0);
-  }
-  const EllipticOrbit* orbit = &*ellipse;
-  const PitchProblem problem = pitch_problem(sc.body, *orbit);
+  const EllipticOrbit orbit = pitch_orbit(sc);
+  const PitchProblem problem = pitch_problem(sc.body, orbit);
   const std::vector<SpinOrbitResonance> resonances = parse_resonances(a.resonances);
   if (a.iterates < 1 || a.iterates > 100000) {
     throw InputError("--iterates: expected 1 to 100000, found " + std::to_string(a.iterates));
   }
   const std::optional<SpinScan> scan = a.spin ? std::optional(parse_spin(*a.spin)) : std::nullopt;
   // The scenario's start, carried to the first periapsis ν = 2πj ≥ ν0.
-  const double nu0 = orbit->true_anomaly0;
+  const double nu0 = orbit.true_anomaly0;
   const double periapsis = 2 * std::numbers::pi * std::ceil(nu0 / (2 * std::numbers::pi));
   const Vec2 x0 = pitch_advance(
-      problem, pitch_state(sc.body, *orbit, sc.initial, nu0, kPlanarTolerance), nu0, periapsis);
+      problem, pitch_state(sc.body, orbit, sc.initial, nu0, kPlanarTolerance), nu0, periapsis);
   std::vector<Vec2> starts{x0};
   if (scan) {
     for (int i = 0; i < scan->n; ++i) {
@@ -234,7 +233,8 @@ const RegisterCommand reg{Command{
     "section",
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<LibrationArgs>();
-      sub.add_option("scenario", a->scenario, "orbit scenario file (TOML), kind = elliptic")
+      sub.add_option("scenario", a->scenario,
+                     "orbit scenario file (TOML), elliptic (or circular, as e = 0)")
           ->required();
       sub.add_option("--resonances", a->resonances,
                      "p:q list (spin:orbit), default " + a->resonances);
