@@ -290,8 +290,12 @@ void run_regime(const Regime& r, int rounds, FILE* data) {
         if (!e.ok || !std::isfinite(cpu[ti][i])) {
           std::printf(" not reached | | | |");
         } else {
-          std::printf(" %.3g | %lld | %.3g | %.2f |", e.param, (long long)e.steps, 1e3 * cpu[ti][i],
-                      cpu[ti][i] / best_peer);
+          std::printf(" %.3g | %lld | %.3g |", e.param, (long long)e.steps, 1e3 * cpu[ti][i]);
+          if (std::isfinite(best_peer)) {
+            std::printf(" %.2f |", cpu[ti][i] / best_peer);
+          } else {
+            std::printf(" no peer |");  // no odeint method reached this target
+          }
         }
       }
       std::printf("\n");

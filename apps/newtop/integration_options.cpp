@@ -8,7 +8,7 @@ namespace newtop::app {
 
 void add_integration_options(CLI::App& sub, std::optional<double>& t_end,
                              std::optional<std::string>& method, std::optional<double>& step,
-                             std::optional<double>& tol) {
+                             std::optional<double>& tol, std::optional<std::string>& split) {
   sub.add_option("--t-end", t_end, "final time (overrides [integrate] t_end)");
   sub.add_option("--method", method,
                  "method: splitting2, splitting4, splitting4-yoshida, splitting6, splitting8, "
@@ -17,6 +17,9 @@ void add_integration_options(CLI::App& sub, std::optional<double>& t_end,
   auto* t =
       sub.add_option("--tol", tol, "absolute and relative tolerance (selects rkf78 by default)");
   s->excludes(t);
+  sub.add_option("--split", split,
+                 "free-body split of the splitting methods: axes, spin or exact (overrides "
+                 "[integrate] split; docs/methods.md)");
 }
 
 void check_run_span(const io::Scenario& sc, const MethodSettings& method, double t0, double t_end,

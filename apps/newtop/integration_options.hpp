@@ -14,16 +14,16 @@ namespace newtop::app {
 
 struct IntegrationArgs {
   std::optional<double> t_end, step, tol;
-  std::optional<std::string> method;
-  io::IntegrateOverrides overrides() const { return {method, step, tol, t_end}; }
+  std::optional<std::string> method, split;
+  io::IntegrateOverrides overrides() const { return {method, step, tol, t_end, split}; }
 };
 
-/// Adds --t-end, --method, --step and --tol (--step excludes --tol).
+/// Adds --t-end, --method, --step, --tol (--step excludes --tol) and --split.
 void add_integration_options(CLI::App& sub, std::optional<double>& t_end,
                              std::optional<std::string>& method, std::optional<double>& step,
-                             std::optional<double>& tol);
+                             std::optional<double>& tol, std::optional<std::string>& split);
 inline void add_integration_options(CLI::App& sub, IntegrationArgs& a) {
-  add_integration_options(sub, a.t_end, a.method, a.step, a.tol);
+  add_integration_options(sub, a.t_end, a.method, a.step, a.tol, a.split);
 }
 
 /// The run from the scenario's t0 to t_end with `method`: non-finite times, a run of no length,

@@ -25,7 +25,7 @@ namespace {
 struct SimulateArgs {
   std::string scenario;
   std::optional<double> t_end, step, tol, dt_out;
-  std::optional<std::string> method, out, times;
+  std::optional<std::string> method, split, out, times;
   std::optional<int> euler;
   std::optional<std::int64_t> every;
   bool json = false;
@@ -67,7 +67,7 @@ struct DriftTracker {
 
 RunPlan make_plan(const SimulateArgs& a, const io::Scenario& sc) {
   RunPlan p;
-  const io::IntegrateOverrides ov{a.method, a.step, a.tol, a.t_end};
+  const io::IntegrateOverrides ov{a.method, a.step, a.tol, a.t_end, a.split};
   p.method = io::resolve_method(sc, ov);
   p.t0 = sc.integrate.t0;
   if (!a.t_end && !sc.integrate.t_end && a.times) {
@@ -236,7 +236,7 @@ const RegisterCommand reg{Command{
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<SimulateArgs>();
       sub.add_option("scenario", a->scenario, "scenario file (TOML)")->required();
-      add_integration_options(sub, a->t_end, a->method, a->step, a->tol);
+      add_integration_options(sub, a->t_end, a->method, a->step, a->tol, a->split);
       sub.add_option("--out", a->out, "write the trajectory to this CSV file");
       auto* every =
           sub.add_option("--every", a->every, "write every N-th step to the CSV (default 1)");

@@ -121,6 +121,8 @@ io::Json simulation_json(const SimulationReport& r) {
   } else {
     j["step"] = r.method.step;
   }
+  if (info.kind == MethodKind::splitting)
+    j["split"] = std::string(to_string(free_body_split(r.method)));
   j["outcome"] = std::string(to_string(r.outcome.status));
   j["steps"] = r.outcome.steps;
   j["rejected_steps"] = r.outcome.rejected;
@@ -163,6 +165,9 @@ void print_simulation_summary(std::ostream& os, const SimulationReport& r) {
     os << "  tol = " << fmt(r.method.abs_tol, 3);
   } else {
     os << "  step = " << fmt(r.method.step);
+  }
+  if (method_info(r.method.name).kind == MethodKind::splitting) {
+    os << "  (" << to_string(free_body_split(r.method)) << " split)";
   }
   os << "\noutcome   " << to_string(o.status) << " at t = " << fmt(o.t) << " after " << o.steps
      << " steps";

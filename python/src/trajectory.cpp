@@ -161,8 +161,8 @@ void bind_trajectory(py::module_& m) {
       "integrate",
       [](const io::Scenario& sc, std::optional<double> t_end,
          const std::optional<std::string>& method, std::optional<double> step,
-         std::optional<double> tol) {
-        const io::IntegrateOverrides ov{method, step, tol, t_end};
+         std::optional<double> tol, const std::optional<std::string>& split) {
+        const io::IntegrateOverrides ov{method, step, tol, t_end, split};
         IntegrateOptions o;
         if (sc.integrate.max_steps) o.max_steps = *sc.integrate.max_steps;
         const double t1 = io::resolve_t_end(sc, ov);
@@ -172,8 +172,10 @@ void bind_trajectory(py::module_& m) {
       },
       py::arg("scenario"), py::kw_only(), py::arg("t_end") = py::none(),
       py::arg("method") = py::none(), py::arg("step") = py::none(), py::arg("tol") = py::none(),
+      py::arg("split") = py::none(),
       "Integrates a scenario with its [integrate] settings, overridden as on the command line "
-      "(newtop simulate --t-end, --method, --step, --tol). Same result as the other form; a "
+      "(newtop simulate --t-end, --method, --step, --tol, --split). Same result as the other form; "
+      "a "
       "scenario with an attitude adds 'quaternion' (N x 4), as simulate's q0..q3 columns.");
 }
 

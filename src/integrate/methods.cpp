@@ -35,6 +35,31 @@ const MethodInfo& method_info(std::string_view name) {
   throw InputError("method: expected one of " + known + ", found '" + std::string(name) + "'");
 }
 
+FreeBodySplit free_body_split(std::string_view name, std::string_view field) {
+  if (name == "axes") return FreeBodySplit::axes;
+  if (name == "spin") return FreeBodySplit::spin;
+  if (name == "exact") return FreeBodySplit::exact;
+  throw InputError(std::string(field) + ": expected \"axes\", \"spin\" or \"exact\", found \"" +
+                   std::string(name) + "\"");
+}
+
+std::string_view to_string(FreeBodySplit split) {
+  switch (split) {
+    case FreeBodySplit::axes:
+      return "axes";
+    case FreeBodySplit::spin:
+      return "spin";
+    case FreeBodySplit::exact:
+      return "exact";
+  }
+  return "axes";
+}
+
+FreeBodySplit free_body_split(const MethodSettings& settings) {
+  if (settings.ordering) return settings.ordering->free_body;
+  return default_ordering(composition_table(settings.name)).free_body;
+}
+
 void validate(const MethodSettings& s) {
   const MethodInfo& info = method_info(s.name);
   if (info.kind == MethodKind::adaptive) {

@@ -23,7 +23,8 @@ const std::vector<std::string> kBodyKeys{"inertia", "inertia_tensor", "mass", "c
                                          "gyrostat"};
 const std::vector<std::string> kInitialKeys{
     "omega", "gamma", "normalize", "quaternion", "rotation_matrix", "euler_321", "euler_313"};
-const std::vector<std::string> kIntegrateKeys{"method", "step", "tol", "t_end", "t0", "max_steps"};
+const std::vector<std::string> kIntegrateKeys{"method", "step",      "tol",  "t_end",
+                                              "t0",     "max_steps", "split"};
 const std::vector<std::string> kOutputKeys{"file", "every", "dt"};
 
 /// Unknown sections and keys first, in every section: a misspelt key is reported as itself, not
@@ -173,6 +174,16 @@ IntegrateSection read_integrate(TableReader& r) {
   if (r.has("max_steps")) {
     s.max_steps = r.integer("max_steps", 1, std::numeric_limits<std::int64_t>::max());
   }
+  s.split = r.optional_string("split");
+  if (s.split) {
+    r.checked([&] { return free_body_split(*s.split, "split"); });
+    if (s.method && method_info(*s.method).kind != MethodKind::splitting) {
+      r.fail("split", "applies to the splitting methods, found method = \"" + *s.method + "\"");
+    }
+    if (!s.method && s.tol) {
+      r.fail("split", "applies to the splitting methods (a step), found tol");
+    }
+  }
   r.finish();
   return s;
 }
@@ -270,6 +281,24 @@ MethodSettings resolve_method(const Scenario& s, const IntegrateOverrides& o) {
     m.abs_tol = m.rel_tol = *tol;
   } else {
     m.step = *step;
+  }
+  const bool splitting = info.kind == MethodKind::splitting;
+  if (o.split && !splitting) {
+    throw InputError(s.source + ": split: applies to the splitting methods, found method " +
+                     m.name);
+  }
+  const std::optional<std::string> split = o.split ? o.split : s.integrate.split;
+  if (split && splitting) {
+    const FreeBodySplit free_body = free_body_split(*split, "split");
+    if (free_body == FreeBodySplit::exact && !s.model.body().gyrostat().isZero(0.0)) {
+      throw InputError(s.source +
+                       ": split: the exact free-body flow needs a body without a gyrostat (k = 0), "
+                       "found k = " +
+                       format_vector(s.model.body().gyrostat()));
+    }
+    SplitOrdering ordering = default_ordering(composition_table(m.name));
+    ordering.free_body = free_body;
+    m.ordering = ordering;
   }
   validate(m);
   return m;

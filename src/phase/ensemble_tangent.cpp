@@ -13,7 +13,7 @@ EnsembleTangentStepper::EnsembleTangentStepper(const CompositionTable& table,
                                                const SplitOrdering& ordering, SimdPath path)
     : order_(table.order), ordering_(ordering), path_(path) {
   if (ordering.free_body != FreeBodySplit::axes) {
-    throw InputError("ordering: expected the axes split of the free body for the tangent map");
+    throw InputError("split: expected the axes split of the free body for the tangent map");
   }
   if (!simd_path_available(path)) {
     throw InputError("simd: expected a path this build and CPU support, found " +

@@ -35,9 +35,8 @@ void check_tangent_method(const MethodSettings& settings) {
     const SplitOrdering o = settings.ordering.value_or(default_ordering(table));
     if (o.free_body != FreeBodySplit::axes) {
       throw InputError(
-          "ordering: expected the axes split of the free body for the tangent map, "
-          "found the " +
-          std::string(o.free_body == FreeBodySplit::spin ? "spin" : "exact") + " split");
+          "split: expected the axes split of the free body for the tangent map, found " +
+          std::string(o.free_body == FreeBodySplit::spin ? "spin" : "exact"));
     }
   }
 }
@@ -46,20 +45,16 @@ TangentSplittingStepper::TangentSplittingStepper(const CompositionTable& table,
                                                  const SplitOrdering& ordering)
     : order_(table.order), ordering_(ordering), c_(splitting_coefficients(table, ordering)) {
   if (ordering.free_body != FreeBodySplit::axes) {
-    throw InputError(
-        "ordering: expected the axes split of the free body for the tangent map, "
-        "found the " +
-        std::string(ordering.free_body == FreeBodySplit::spin ? "spin" : "exact") + " split");
+    throw InputError("split: expected the axes split of the free body for the tangent map, found " +
+                     std::string(ordering.free_body == FreeBodySplit::spin ? "spin" : "exact"));
   }
 }
 
 TangentSplittingStepper::TangentSplittingStepper(const SplittingStepper& stepper)
     : order_(stepper.order()), ordering_(stepper.ordering()), c_(stepper.coefficients()) {
   if (ordering_.free_body != FreeBodySplit::axes) {
-    throw InputError(
-        "ordering: expected the axes split of the free body for the tangent map, "
-        "found the " +
-        std::string(ordering_.free_body == FreeBodySplit::spin ? "spin" : "exact") + " split");
+    throw InputError("split: expected the axes split of the free body for the tangent map, found " +
+                     std::string(ordering_.free_body == FreeBodySplit::spin ? "spin" : "exact"));
   }
 }
 

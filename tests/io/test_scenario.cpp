@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "newtop/integrate/composition_tables.hpp"
 #include "newtop/io/scenario.hpp"
 
 namespace newtop::io {
@@ -137,6 +138,54 @@ TEST(Scenario, UnreadableFile) {
 TEST(Scenario, UnknownMethod) {
   expect_error(replace(kValid, "step = 0.01", "step = 0.01\nmethod = \"euler\""),
                {"[integrate] method", "euler", "splitting6"});
+}
+
+TEST(Scenario, SplitOfTheFreeBodySetsTheOrdering) {
+  // Absent: the method's default ordering (no override).
+  EXPECT_FALSE(resolve_method(parse_scenario(kValid, "s.toml"), {}).ordering.has_value());
+  const std::string spin = replace(kValid, "step = 0.01", "step = 0.01\nsplit = \"spin\"");
+  const Scenario s = parse_scenario(spin, "s.toml");
+  const MethodSettings m = resolve_method(s, {});
+  ASSERT_TRUE(m.ordering.has_value());
+  EXPECT_EQ(m.ordering->free_body, FreeBodySplit::spin);
+  // The rest of the ordering is the method's default.
+  const SplitOrdering d = default_ordering(composition_table(m.name));
+  EXPECT_EQ(m.ordering->kick_outside, d.kick_outside);
+  EXPECT_EQ(m.ordering->axes, d.axes);
+  // The command line wins; the file's split is dropped for a method that is not a splitting.
+  IntegrateOverrides axes;
+  axes.split = "axes";
+  EXPECT_EQ(resolve_method(s, axes).ordering->free_body, FreeBodySplit::axes);
+  EXPECT_FALSE(resolve_method(s, with_tol(1e-9)).ordering.has_value());
+  IntegrateOverrides bad = with_tol(1e-9);
+  bad.split = "spin";
+  EXPECT_THROW(resolve_method(s, bad), InputError);
+  // The exact free-body flow: only without a gyrostat.
+  IntegrateOverrides exact;
+  exact.split = "exact";
+  EXPECT_EQ(resolve_method(s, exact).ordering->free_body, FreeBodySplit::exact);
+  const Scenario k =
+      parse_scenario(replace(spin, "center_of_mass = [0.1, 0.0, 0.3]",
+                             "center_of_mass = [0.1, 0.0, 0.3]\ngyrostat = [0.0, 0.1, 0.0]"),
+                     "s.toml");
+  try {
+    resolve_method(k, exact);
+    ADD_FAILURE() << "exact split with a gyrostat accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("split: the exact free-body flow needs"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Scenario, BadSplitIsNamed) {
+  expect_error(replace(kValid, "step = 0.01", "step = 0.01\nsplit = \"rotations\""),
+               {"split", "expected \"axes\", \"spin\" or \"exact\"", "rotations"});
+  expect_error(replace(kValid, "step = 0.01", "tol = 1e-9\nsplit = \"spin\""),
+               {"split", "found tol"});
+  expect_error(replace(kValid, "step = 0.01", "method = \"rkf78\"\ntol = 1e-9\nsplit = \"spin\""),
+               {"split", "applies to the splitting methods", "rkf78"});
+  expect_error(replace(kValid, "step = 0.01", "step = 0.01\nsplit = 3"), {"split"});
 }
 
 TEST(Scenario, FullTensorRotatesTheInitialVectors) {

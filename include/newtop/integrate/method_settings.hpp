@@ -43,6 +43,16 @@ struct MethodSettings {
   std::optional<SplitOrdering> ordering;
 };
 
+/// The split of the free body by name: "axes", "spin" or "exact" (FreeBodySplit); throws
+/// InputError naming `field` otherwise.
+FreeBodySplit free_body_split(std::string_view name, std::string_view field);
+
+/// The name of a split ("axes", "spin", "exact").
+std::string_view to_string(FreeBodySplit split);
+
+/// The split of the free body a splitting method runs with: its ordering's, or its table's default.
+FreeBodySplit free_body_split(const MethodSettings& settings);
+
 /// Checks the settings (known name, a step > 0 for fixed-step methods, tolerances > 0 for adaptive
 /// ones); throws InputError naming the field.
 void validate(const MethodSettings& settings);
