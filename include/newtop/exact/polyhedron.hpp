@@ -99,7 +99,7 @@ class Polyhedron {
 /// Φ = σ/2 [Σ_e r_e·E_e r_e L_e − Σ_f (n_f·r_f)² ω_f], ∇Φ = σ [−Σ_e E_e r_e L_e + Σ_f n_f (n_f·r_f)
 /// ω_f], r = vertex − x, L_e = ln((a + b + e)/(a + b − e)), ω_f the signed solid angle of face f.
 /// Valid everywhere except on the surface's edges and vertices. The faces and edges are summed in
-/// fixed blocks, each block in order, so the result has the same bits for any number of threads.
+/// fixed blocks, each in a fixed order, so the result has the same bits for any number of threads.
 /// threads > 1 evaluates blocks in parallel with OpenMP (where available). The moment is ∇Φ × x:
 /// the closed form does not separate the monopole, so it carries the sums' cancellation, about
 /// C ε (|x|/r)⁴ relative (exact_field.hpp uses the multipole series far from the body).
