@@ -160,6 +160,49 @@ Vec3 accurate_first_moment(const std::vector<Vec3>& v, const std::vector<Triangl
   return sigma / 24.0 * Vec3(sum[0].value(), sum[1].value(), sum[2].value());
 }
 
+/// The structure-of-arrays streams of the closed form (Polyhedron::Streams).
+Polyhedron::Streams make_streams(const std::vector<Vec3>& v, const std::vector<Triangle>& faces,
+                                 const std::vector<Vec3>& normals,
+                                 const std::vector<Polyhedron::Edge>& edges) {
+  Polyhedron::Streams s;
+  for (const Vec3& p : v) {
+    s.vx.push_back(p.x());
+    s.vy.push_back(p.y());
+    s.vz.push_back(p.z());
+  }
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const Vec3 &a = v[faces[f][0]], &b = v[faces[f][1]], &c = v[faces[f][2]];
+    const Vec3& n = normals[f];
+    s.fa.push_back(faces[f][0]);
+    s.fb.push_back(faces[f][1]);
+    s.fc.push_back(faces[f][2]);
+    s.nx.push_back(n.x());
+    s.ny.push_back(n.y());
+    s.nz.push_back(n.z());
+    s.h.push_back(n.dot(a));
+    s.area2.push_back((b - a).cross(c - a).norm());
+    s.bc2.push_back((c - b).squaredNorm());
+    s.ca2.push_back((a - c).squaredNorm());
+    s.ab2.push_back((b - a).squaredNorm());
+  }
+  for (const Polyhedron::Edge& e : edges) {
+    const auto& E = e.E;
+    const Vec3& a = v[e.i];
+    const Vec3 c{E[0] * a.x() + E[3] * a.y() + E[4] * a.z(),
+                 E[3] * a.x() + E[1] * a.y() + E[5] * a.z(),
+                 E[4] * a.x() + E[5] * a.y() + E[2] * a.z()};
+    s.ei.push_back(e.i);
+    s.ej.push_back(e.j);
+    s.length.push_back(e.length);
+    for (int m = 0; m < 6; ++m) s.E[m].push_back(E[m]);
+    s.cx.push_back(c.x());
+    s.cy.push_back(c.y());
+    s.cz.push_back(c.z());
+    s.k.push_back(a.dot(c));
+  }
+  return s;
+}
+
 }  // namespace
 
 void Polyhedron::check_mass_properties(const Polyhedron& p) {
@@ -237,6 +280,7 @@ Polyhedron Polyhedron::make(std::vector<Vec3> vertices, std::vector<Triangle> fa
   // A fixed edge order (the hash map's order is unspecified) keeps results reproducible.
   std::sort(p.edges_.begin(), p.edges_.end(),
             [](const Edge& a, const Edge& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
+  p.streams_ = make_streams(p.vertices_, p.faces_, p.normals_, p.edges_);
   p.first_moment_ = accurate_first_moment(p.vertices_, p.faces_, density);
   check_mass_properties(p);
   return p;

@@ -162,9 +162,14 @@ TEST(PolyhedronPotential, AgreesWithEllipsoidApproximatedByFineMesh) {
 TEST(PolyhedronPotential, SameBitsForAnyThreadCount) {
   const Polyhedron eros = io::load_polyhedron(kData + "eros.face", 1.0);
   const Vec3 x(40.0, -3.0, 12.0);
-  const Attraction one = attraction(eros, x, 1), four = attraction(eros, x, 4);
-  EXPECT_EQ(one.potential, four.potential);
-  EXPECT_EQ(one.gradient, four.gradient);
+  const Attraction one = attraction(eros, x, 1);
+  const GravityGradient one_g = gravity_gradient(eros, x, 1);
+  for (int threads : {2, 3, 4}) {
+    const Attraction a = attraction(eros, x, threads);
+    EXPECT_EQ(one.potential, a.potential) << threads;
+    EXPECT_EQ(one.gradient, a.gradient) << threads;
+    EXPECT_EQ(one_g.tensor, gravity_gradient(eros, x, threads).tensor) << threads;
+  }
 }
 
 }  // namespace

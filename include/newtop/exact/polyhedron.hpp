@@ -59,6 +59,27 @@ class Polyhedron {
   /// Unit outward normal of each face.
   const std::vector<Vec3>& normals() const { return normals_; }
 
+  /// The closed form's data as structure-of-arrays streams, built once by make(), so that an
+  /// evaluation reads contiguous arrays and gathers only the distances |r| of the vertices
+  /// (docs/performance.md). With a, b, c the vertices of face f, N_f = (b − a) × (c − a):
+  /// r_a·(r_b × r_c) = N_f·r_a = |N_f| (n_f·r_a), n_f·r_a = h_f − n_f·x, and
+  /// r_b·r_c = (|r_b|² + |r_c|² − |c − b|²)/2. With v_i the first end of edge e (E_e v_j = E_e
+  /// v_i), E_e r = c_e − E_e x and r·E_e r = k_e − 2 c_e·x + x·E_e x.
+  struct Streams {
+    std::vector<double> vx, vy, vz;        ///< vertex coordinates
+    std::vector<int> fa, fb, fc;           ///< the vertices a, b, c of each face
+    std::vector<double> nx, ny, nz;        ///< n_f
+    std::vector<double> h;                 ///< h_f = n_f·a
+    std::vector<double> area2;             ///< |N_f|, twice the face's area
+    std::vector<double> bc2, ca2, ab2;     ///< |c − b|², |a − c|², |b − a|²
+    std::vector<int> ei, ej;               ///< end points of each edge
+    std::vector<double> length;            ///< |v_j − v_i|
+    std::array<std::vector<double>, 6> E;  ///< E_e as (xx, yy, zz, xy, xz, yz)
+    std::vector<double> cx, cy, cz;        ///< c_e = E_e v_i
+    std::vector<double> k;                 ///< k_e = v_i·E_e v_i
+  };
+  const Streams& streams() const { return streams_; }
+
  private:
   Polyhedron() = default;
   /// Throws InputError when the volume, mass or inertia tensor overflows.
@@ -67,6 +88,7 @@ class Polyhedron {
   std::vector<Triangle> faces_;
   std::vector<Vec3> normals_;
   std::vector<Edge> edges_;
+  Streams streams_;
   double density_ = 0.0;
   double volume_ = 0.0;
   Vec3 first_moment_ = Vec3::Zero();
@@ -77,7 +99,7 @@ class Polyhedron {
 /// Φ = σ/2 [Σ_e r_e·E_e r_e L_e − Σ_f (n_f·r_f)² ω_f], ∇Φ = σ [−Σ_e E_e r_e L_e + Σ_f n_f (n_f·r_f)
 /// ω_f], r = vertex − x, L_e = ln((a + b + e)/(a + b − e)), ω_f the signed solid angle of face f.
 /// Valid everywhere except on the surface's edges and vertices. The faces and edges are summed in
-/// fixed blocks, each block in order, so the result has the same bits for any number of threads.
+/// fixed blocks, each in a fixed order, so the result has the same bits for any number of threads.
 /// threads > 1 evaluates blocks in parallel with OpenMP (where available). The moment is ∇Φ × x:
 /// the closed form does not separate the monopole, so it carries the sums' cancellation, about
 /// C ε (|x|/r)⁴ relative (exact_field.hpp uses the multipole series far from the body).
