@@ -28,7 +28,9 @@ double rj(double x, double y, double z, double p) {
 /// that brings `pole` last, l' = Q l = (sinθ sinψ, sinθ cosψ, cosθ).
 Mat3 euler_frame(const Vec3& l, int pole) {
   const int a = (pole + 1) % 3, b = (pole + 2) % 3;
-  const double st = std::hypot(l[a], l[b]), ct = l[pole];
+  // |l| = 1: the plain root of the sum of squares neither overflows nor underflows (hypot's
+  // scaling would cost a fifth of the flow).
+  const double st = std::sqrt(l[a] * l[a] + l[b] * l[b]), ct = l[pole];
   const double sp = st > 0 ? l[a] / st : 0.0, cp = st > 0 ? l[b] / st : 1.0;
   // Rows of R_x(θ) R_z(ψ), then columns permuted by Q (column j of the product goes to axis j').
   const double r[3][3] = {{cp, -sp, 0.0}, {ct * sp, ct * cp, -st}, {st * sp, st * cp, ct}};
@@ -47,7 +49,8 @@ double third_kind_part(double n, double s, double c, double d) {
   return s * s * s * rj(c * c, d * d, 1.0, 1.0 - n * s * s);
 }
 
-/// The working frame, the elliptic parameters and the constants of the precession angle.
+/// The working frame, the elliptic parameters, sn cn dn at the start and the constants of the
+/// precession angle: everything but the complete integral K and the argument u0 (set_argument).
 void setup_elliptic(EulerPoinsot& s, const Vec3& m) {
   const Vec3& I = s.inertia;
   std::array<int, 3> order{0, 1, 2};
@@ -77,22 +80,19 @@ void setup_elliptic(EulerPoinsot& s, const Vec3& m) {
   const double s3 = w[2] < 0 ? -1.0 : 1.0;
   const double k2 = std::clamp((B - A) / (C - B) * D1 / D2, 0.0, 1.0);
   s.modulus = std::sqrt(k2);
+  s.complementary = 1.0 - k2;
   s.nu = s3 * (C > B ? 1.0 : -1.0) * std::sqrt((C - B) * D2 / (A * B * C));
   s.amplitude = Vec3(a1, a2, s3 * a3);
-  const double kc2 = 1.0 - k2;
-  s.quarter = kc2 > 0.0 ? rf(0.0, kc2, 1.0) : std::numeric_limits<double>::infinity();
-  s.period = 4.0 * s.quarter / std::abs(s.nu);
   // Start: sn u0 = w2/α2, cn u0 = w1/α1, dn u0 = |w3|/α3 (the last without the cancellation of
-  // 1 − k² sn² near the separatrix); u0 = F(am u0) by Carlson's R_F, reduced to |u0r| ≤ K.
+  // 1 − k² sn² near the separatrix).
   double sn0 = a2 > 0 ? w[1] / a2 : 0.0, cn0 = a1 > 0 ? w[0] / a1 : 1.0;
-  const double norm = std::hypot(sn0, cn0);
+  const double norm = std::sqrt(sn0 * sn0 + cn0 * cn0);  // ≈ 1: no hypot needed
   sn0 /= norm, cn0 /= norm;
   const double dn0 = a3 > 0 ? std::abs(w[2]) / a3 : 1.0;
-  const double f0 = sn0 * rf(cn0 * cn0, dn0 * dn0, 1.0);  // F(φ0r), φ0r = φ0 reduced
+  s.jacobi_start = Vec3(sn0, cn0, dn0);
+  // u0 = 2jK + u0r with |u0r| ≤ K: j = 0 for cn0 ≥ 0, otherwise ±1.
   s.half_periods_start = cn0 < 0 ? (sn0 < 0 ? -1 : 1) : 0;
-  // For cn0 < 0: φ0 = jπ + φ0r with sin φ0r = −sn0 (j = ±1), so u0 = 2jK + F(φ0r).
   const double sgn = s.half_periods_start == 0 ? 1.0 : -1.0;
-  s.u0 = s.half_periods_start == 0 ? f0 : 2.0 * s.half_periods_start * s.quarter - f0;
   // The pole of the Euler angles: the working axis that m stays farthest from (least amplitude);
   // L² − m_p² = c (1 − n sn²u).
   const double L2 = w.squaredNorm(), L = std::sqrt(L2);
@@ -112,9 +112,19 @@ void setup_elliptic(EulerPoinsot& s, const Vec3& m) {
   s.third_kind_start = third_kind_part(n, sgn * sn0, sgn * cn0, dn0);
 }
 
-}  // namespace
+/// K(k), the period and u0 = F(am u0) by Carlson's R_F, from sn cn dn at the start.
+void set_argument(EulerPoinsot& s) {
+  const double kc2 = s.complementary;
+  s.quarter = kc2 > 0.0 ? rf(0.0, kc2, 1.0) : std::numeric_limits<double>::infinity();
+  s.period = 4.0 * s.quarter / std::abs(s.nu);
+  const double sn0 = s.jacobi_start[0], cn0 = s.jacobi_start[1], dn0 = s.jacobi_start[2];
+  const double f0 = sn0 * rf(cn0 * cn0, dn0 * dn0, 1.0);  // F(φ0r), φ0r = φ0 reduced
+  // For cn0 < 0: φ0 = jπ + φ0r with sin φ0r = −sn0 (j = ±1), so u0 = 2jK + F(φ0r).
+  s.u0 = s.half_periods_start == 0 ? f0 : 2.0 * s.half_periods_start * s.quarter - f0;
+}
 
-EulerPoinsot euler_poinsot(const Body& body, const State& x0) {
+/// The free motion from x0 without K and u0 (setup_elliptic); s.permanent when m is constant.
+EulerPoinsot euler_poinsot_start(const Body& body, const State& x0) {
   if (!body.gyrostat().isZero(0.0)) {
     throw InputError("gyrostat: the Euler–Poinsot solution needs k = 0, found k = " +
                      format_vector(body.gyrostat()));
@@ -136,6 +146,14 @@ EulerPoinsot euler_poinsot(const Body& body, const State& x0) {
   s.momentum_norm = x0.m.norm();
   setup_elliptic(s, x0.m);
   s.euler_start = euler_frame(x0.m.normalized(), s.pole);
+  return s;
+}
+
+}  // namespace
+
+EulerPoinsot euler_poinsot(const Body& body, const State& x0) {
+  EulerPoinsot s = euler_poinsot_start(body, x0);
+  if (!s.permanent) set_argument(s);
   return s;
 }
 
@@ -206,24 +224,62 @@ State free_body_state(const EulerPoinsot& s, double t) {
   return free_body_state(s, t, G);
 }
 
-State free_body_state(const EulerPoinsot& s, double t, Mat3& G) {
-  if (s.permanent) {
-    const Vec3 w = s.initial.m.cwiseQuotient(s.inertia);
-    const double n = w.norm();
-    if (n == 0.0) {
-      G.setIdentity();
-      return s.initial;
-    }
-    // γ̇ = γ × ω = −ω × γ: a rotation by −|ω| t about ω.
-    G = Eigen::AngleAxisd(-n * t, w / n).toRotationMatrix();
-    return {s.initial.m, G * s.initial.gamma};
-  }
-  const Reduced r = jacobi_reduced(s, s.u0 + s.nu * t);
+namespace {
+
+/// The state at t from sn cn dn at u(t) (the Euler frame of m(t) and the precession about m).
+State state_at(const EulerPoinsot& s, const Reduced& r, double t, Mat3& G) {
   const Vec3 m = momentum_at(s, r);
   const Mat3 St = euler_frame(m.normalized(), s.pole);
   const Mat3 Rz(Eigen::AngleAxisd(-precession_at(s, r, t), Vec3::UnitZ()));
   G = St.transpose() * (Rz * s.euler_start);
   return {m, St.transpose() * (Rz * (s.euler_start * s.initial.gamma))};
+}
+
+/// The permanent rotation: γ̇ = γ × ω = −ω × γ, a rotation by −|ω| t about ω.
+State permanent_state(const EulerPoinsot& s, double t, Mat3& G) {
+  const Vec3 w = s.initial.m.cwiseQuotient(s.inertia);
+  const double n = w.norm();
+  if (n == 0.0) {
+    G.setIdentity();
+    return s.initial;
+  }
+  G = Eigen::AngleAxisd(-n * t, w / n).toRotationMatrix();
+  return {s.initial.m, G * s.initial.gamma};
+}
+
+/// sn cn dn at u0 + v from their values at u0 (s.jacobi_start) and at v (Boost), by the addition
+/// theorems (DLMF 22.8.1–3), for |v| < 2K: u0 + v then lies within one half period of u0, so the
+/// half periods crossed are told by the sign of cn (am u grows with u; cn changes sign where am u
+/// passes π/2 + jπ). Written to r reduced like jacobi_reduced (no K, no u0). Returns false, r
+/// unset, where the common denominator 1 − k² sn²u0 sn²v falls below 1/2 (near the separatrix,
+/// with sn u0 and sn v near ±1): its cancellation would amplify the rounding of its terms.
+bool jacobi_after(const EulerPoinsot& s, double v, Reduced& r) {
+  constexpr double kLeastDenominator = 0.5;
+  const double k = s.modulus, k2 = k * k;
+  double cv = 1.0, dn_boost = 1.0;
+  const double sv = boost::math::jacobi_elliptic(k, v, &cv, &dn_boost, DoublePolicy());
+  const double dv = std::sqrt(s.complementary + k2 * cv * cv);  // as in jacobi_reduced
+  const double s0 = s.jacobi_start[0], c0 = s.jacobi_start[1], d0 = s.jacobi_start[2];
+  const double den = 1.0 - k2 * (s0 * s0) * (sv * sv);
+  if (!(den >= kLeastDenominator)) return false;
+  const double sn = (s0 * cv * dv + sv * c0 * d0) / den;
+  const double cn = (c0 * cv - s0 * sv * d0 * dv) / den;
+  const bool crossed = (cn < 0) != (c0 < 0);
+  r.j = s.half_periods_start + (crossed ? (v > 0 ? 1 : -1) : 0);
+  const double sign = r.j % 2 == 0 ? 1.0 : -1.0;
+  r.sn = sign * sn;
+  r.cn = sign * cn;
+  r.dn = std::sqrt(s.complementary + k2 * cn * cn);
+  return true;
+}
+
+constexpr double kPi = 3.141592653589793;
+
+}  // namespace
+
+State free_body_state(const EulerPoinsot& s, double t, Mat3& G) {
+  if (s.permanent) return permanent_state(s, t, G);
+  return state_at(s, jacobi_reduced(s, s.u0 + s.nu * t), t, G);
 }
 
 Quaternion free_body_attitude(const EulerPoinsot& s, const Quaternion& q0, double t) {
@@ -248,11 +304,18 @@ Quaternion free_body_pole_frame(const EulerPoinsot& s) {
 }
 
 State free_body_flow(const Body& body, const State& x, double h) {
-  return free_body_state(euler_poinsot(body, x), h);
+  Mat3 G;
+  return free_body_flow(body, x, h, G);
 }
 
 State free_body_flow(const Body& body, const State& x, double h, Mat3& rotation) {
-  return free_body_state(euler_poinsot(body, x), h, rotation);
+  EulerPoinsot s = euler_poinsot_start(body, x);
+  if (s.permanent) return permanent_state(s, h, rotation);
+  // |ν h| < π ≤ 2K: within a half period of the start, by the addition theorems (no R_F).
+  Reduced r;
+  if (std::abs(s.nu * h) < kPi && jacobi_after(s, s.nu * h, r)) return state_at(s, r, h, rotation);
+  set_argument(s);
+  return free_body_state(s, h, rotation);
 }
 
 }  // namespace newtop

@@ -37,6 +37,7 @@ struct EulerPoinsot {
   Vec3 moments = Vec3::Zero();    ///< (A, B, C) in the working frame
   Vec3 amplitude = Vec3::Zero();  ///< (α1, α2, σ3 α3)
   double modulus = 0.0;           ///< k of the Jacobi functions, 0 ≤ k ≤ 1
+  double complementary = 1.0;     ///< k'² = 1 − k²
   double nu = 0.0;                ///< dU/dt (signed)
   double u0 = 0.0;                ///< argument at t = 0
   double period = 0.0;            ///< period of m(t), 4K(k)/|ν| (∞ for a permanent rotation)
@@ -48,7 +49,8 @@ struct EulerPoinsot {
   double third_kind_scale = 0.0;  ///< L (2E − L²/I_p) n / (3 c ν)
   double third_kind_start = 0.0;  ///< sin³φ R_J(…) at the start, reduced to |φ| ≤ π/2
   int half_periods_start = 0;     ///< u0 = u0r + 2 j K with |u0r| ≤ K: this j
-  Mat3 euler_start = Mat3::Identity();  ///< the Euler frame of the initial m
+  Vec3 jacobi_start = Vec3(0.0, 1.0, 1.0);  ///< (sn u0, cn u0, dn u0)
+  Mat3 euler_start = Mat3::Identity();      ///< the Euler frame of the initial m
 };
 
 /// The free motion from x0. Throws InputError if the body carries a gyrostatic moment (k ≠ 0) or x0
@@ -89,7 +91,9 @@ double precession_angle(const EulerPoinsot& s, double t);
 /// Its rate dφ/dt = |m| (m_a²/I_a + m_b²/I_b)/(m_a² + m_b²) at the angular momentum m.
 double precession_rate(const EulerPoinsot& s, const Vec3& m);
 
-/// Exact free-body flow over time h: free_body_state(euler_poinsot(body, x), h).
+/// Exact free-body flow over time h: free_body_state(euler_poinsot(body, x), h), computed for
+/// |ν h| < π (within a half period of m) from sn cn dn of the start and of ν h by the addition
+/// theorems, without the complete integral K and the start argument u0 (two R_F fewer).
 State free_body_flow(const Body& body, const State& x, double h);
 
 /// Splitting of H = ½ m·I⁻¹m + V(γ) into the exact free-body flow F and the potential kick K

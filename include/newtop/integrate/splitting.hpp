@@ -19,6 +19,7 @@
 #include <cmath>
 #include <span>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "newtop/integrate/composition_tables.hpp"
@@ -141,7 +142,7 @@ inline void apply_rotation(const Mat3& G, Phase& a) {
 
 /// The kick over t: m += t γ × ∂V/∂γ, the moment computed by moment(model, γ) in the body frame.
 template <class P, Field F>
-inline void kick(Phase& z, const BasicModel<F>& model, double t) {
+[[gnu::always_inline]] inline void kick(Phase& z, const BasicModel<F>& model, double t) {
   Vec3 g;
   for (int w = 0; w < 3; ++w) g[P::axis[w]] = P::sign[w] * z.g(w);
   const Vec3 L = moment(model, g);
@@ -151,7 +152,8 @@ inline void kick(Phase& z, const BasicModel<F>& model, double t) {
 /// T(t) by rotations about the three axes, Strang-split (FreeBodySplit::axes).
 struct AxesFlow {
   template <class P, class... A>
-  static void flow(Phase& z, const SplitFrame& f, const Body&, double t, A&... a) {
+  [[gnu::always_inline]] static void flow(Phase& z, const SplitFrame& f, const Body&, double t,
+                                          A&... a) {
     const double t2 = 0.5 * t;
     axis_flow<0>(z, t2 * f.rate[0], -t2 * f.k_over_i[0], a...);
     axis_flow<1>(z, t2 * f.rate[1], -t2 * f.k_over_i[1], a...);
@@ -165,7 +167,8 @@ struct AxesFlow {
 template <bool Gyrostat>
 struct SpinFlow {
   template <class P, class... A>
-  static void flow(Phase& z, const SplitFrame& f, const Body&, double t, A&... a) {
+  [[gnu::always_inline]] static void flow(Phase& z, const SplitFrame& f, const Body&, double t,
+                                          A&... a) {
     const double t2 = 0.5 * t;
     spin_flow(z, t * f.inv_ref, a...);
     axis_flow<0>(z, t2 * f.rate[0], -t2 * f.k_over_i[0], a...);
@@ -183,7 +186,8 @@ struct SpinFlow {
 /// T(t) exact (FreeBodySplit::exact).
 struct ExactFlow {
   template <class P, class... A>
-  static void flow(Phase& z, const SplitFrame&, const Body& body, double t, A&... a) {
+  [[gnu::always_inline]] static void flow(Phase& z, const SplitFrame&, const Body& body, double t,
+                                          A&... a) {
     State x;
     to_state<P>(z, x);
     if constexpr (sizeof...(A) == 0) {
@@ -200,28 +204,48 @@ struct ExactFlow {
 template <class X>
 using StepResult = std::conditional_t<kOriented<X>, double, void>;
 
-/// One step in the frame P: the generic loop over the coefficients (with an attitude, its rows
-/// carried as passengers).
-template <class P, class T, Field F, class X>
+/// One stage of a step: the kick K(b_i h) (skipped when b_i = 0), then T(a_i h).
+template <class P, class T, Field F, class... A>
+[[gnu::always_inline]] inline void run_stage(Phase& z, const BasicModel<F>& model,
+                                             const SplitFrame& f, double b, double a, double h,
+                                             A&... passengers) {
+  if (b != 0.0) kick<P>(z, model, b * h);
+  T::template flow<P>(z, f, model.body, a * h, passengers...);
+}
+
+/// All stages of a step, the last kick included: N > 0 stages unrolled at compile time (the
+/// state stays in registers through the kicks), N = 0 the generic loop over c.a.size().
+template <class P, class T, std::size_t N, Field F, class... A>
+[[gnu::always_inline]] inline void run_stages(Phase& z, const BasicModel<F>& model,
+                                              const SplitFrame& f, const SplittingCoefficients& c,
+                                              double h, A&... passengers) {
+  const double* a = c.a.data();
+  const double* b = c.b.data();
+  std::size_t s = N;
+  if constexpr (N == 0) {
+    s = c.a.size();
+    for (std::size_t i = 0; i < s; ++i) run_stage<P, T>(z, model, f, b[i], a[i], h, passengers...);
+  } else {
+    run_stage<P, T>(z, model, f, b[0], a[0], h, passengers...);
+    if constexpr (N >= 2) run_stage<P, T>(z, model, f, b[1], a[1], h, passengers...);
+    static_assert(N <= 2);
+  }
+  if (b[s] != 0.0) kick<P>(z, model, b[s] * h);
+}
+
+/// One step in the frame P with N stages (0: any number; see run_stages), an attitude's rows
+/// carried as passengers.
+template <class P, class T, std::size_t N, Field F, class X>
 [[gnu::flatten]] StepResult<X> run_step(const BasicModel<F>& model, X& x, const SplitFrame& f,
                                         const SplittingCoefficients& c, double h) {
   Phase z = to_phase<P>(x);
-  const std::size_t s = c.a.size();
   if constexpr (kOriented<X>) {
     AttitudePhase r = to_attitude_phase<P>(x.q);
-    for (std::size_t i = 0; i < s; ++i) {
-      if (c.b[i] != 0.0) kick<P>(z, model, c.b[i] * h);
-      T::template flow<P>(z, f, model.body, c.a[i] * h, r.a, r.b);
-    }
-    if (c.b[s] != 0.0) kick<P>(z, model, c.b[s] * h);
+    run_stages<P, T, N>(z, model, f, c, h, r.a, r.b);
     to_state<P>(z, x);
     return from_attitude_phase<P>(r, x.q);
   } else {
-    for (std::size_t i = 0; i < s; ++i) {
-      if (c.b[i] != 0.0) kick<P>(z, model, c.b[i] * h);
-      T::template flow<P>(z, f, model.body, c.a[i] * h);
-    }
-    if (c.b[s] != 0.0) kick<P>(z, model, c.b[s] * h);
+    run_stages<P, T, N>(z, model, f, c, h);
     to_state<P>(z, x);
   }
 }
@@ -230,22 +254,36 @@ template <Field F, class X = State>
 using StepKernel = StepResult<X> (*)(const BasicModel<F>&, X&, const SplitFrame&,
                                      const SplittingCoefficients&, double);
 
-/// The kernel of T for the permutation (axis[0], axis[1], axis[2]).
-template <class T, Field F, class X = State>
+/// The kernel of T with N stages for the permutation (axis[0], axis[1], axis[2]).
+template <class T, std::size_t N, Field F, class X = State>
 StepKernel<F, X> step_kernel(const std::array<int, 3>& axis) {
   switch (axis[0] * 3 + axis[1]) {
     case 1:
-      return &run_step<Axes<0, 1, 2>, T, F, X>;
+      return &run_step<Axes<0, 1, 2>, T, N, F, X>;
     case 2:
-      return &run_step<Axes<0, 2, 1>, T, F, X>;
+      return &run_step<Axes<0, 2, 1>, T, N, F, X>;
     case 3:
-      return &run_step<Axes<1, 0, 2>, T, F, X>;
+      return &run_step<Axes<1, 0, 2>, T, N, F, X>;
     case 5:
-      return &run_step<Axes<1, 2, 0>, T, F, X>;
+      return &run_step<Axes<1, 2, 0>, T, N, F, X>;
     case 6:
-      return &run_step<Axes<2, 0, 1>, T, F, X>;
+      return &run_step<Axes<2, 0, 1>, T, N, F, X>;
     default:
-      return &run_step<Axes<2, 1, 0>, T, F, X>;
+      return &run_step<Axes<2, 1, 0>, T, N, F, X>;
+  }
+}
+
+/// The kernel of T for the permutation and the number of stages: the step of splitting2 (one or
+/// two stages) unrolled, any other the generic loop.
+template <class T, Field F, class X = State>
+StepKernel<F, X> step_kernel(const std::array<int, 3>& axis, std::size_t stages) {
+  switch (stages) {
+    case 1:
+      return step_kernel<T, 1, F, X>(axis);
+    case 2:
+      return step_kernel<T, 2, F, X>(axis);
+    default:
+      return step_kernel<T, 0, F, X>(axis);
   }
 }
 
@@ -301,15 +339,16 @@ void SplittingStepper::step(const BasicModel<F>& model, X& x, double h) {
   detail::StepKernel<F, X> kernel = nullptr;
   switch (ordering_.free_body) {
     case FreeBodySplit::axes:
-      kernel = detail::step_kernel<detail::AxesFlow, F, X>(frame_.axis);
+      kernel = detail::step_kernel<detail::AxesFlow, F, X>(frame_.axis, coefficients_.a.size());
       break;
     case FreeBodySplit::spin:
-      kernel = frame_.gyrostat_ref
-                   ? detail::step_kernel<detail::SpinFlow<true>, F, X>(frame_.axis)
-                   : detail::step_kernel<detail::SpinFlow<false>, F, X>(frame_.axis);
+      kernel = frame_.gyrostat_ref ? detail::step_kernel<detail::SpinFlow<true>, F, X>(
+                                         frame_.axis, coefficients_.a.size())
+                                   : detail::step_kernel<detail::SpinFlow<false>, F, X>(
+                                         frame_.axis, coefficients_.a.size());
       break;
     case FreeBodySplit::exact:
-      kernel = &detail::run_step<detail::Axes<0, 1, 2>, detail::ExactFlow, F, X>;
+      kernel = &detail::run_step<detail::Axes<0, 1, 2>, detail::ExactFlow, 0, F, X>;
       break;
   }
   if constexpr (kOriented<X>) {

@@ -93,7 +93,7 @@ inline constexpr double kLongSeries = 1e-2;
 /// chain stays short; for larger angles by std::sin and cos θ − 1 = −2 sin²(θ/2), which avoids
 /// the cancellation of cos θ − 1.
 template <class R>
-inline void sin_cosm1(R theta, R& s, R& cm1) {
+[[gnu::always_inline]] inline void sin_cosm1(R theta, R& s, R& cm1) {
   using namespace detail;
   const R t2 = theta * theta;
   if (t2 <= kShortSeries) {
@@ -137,7 +137,7 @@ inline void spin_factors(R phi2, R& f1, R& f2) {
 /// for x = m and x = γ at once. Written as x + increment, so that the rounding is relative to the
 /// increment and a cos θ − 1 far below ε is not lost.
 template <int I, class R>
-inline void rotate(PhaseT<R>& z, R s, R cm1) {
+[[gnu::always_inline]] inline void rotate(PhaseT<R>& z, R s, R cm1) {
   constexpr int J = (I + 1) % 3, K = (I + 2) % 3;
   const Pair<R> a = z.v[J], b = z.v[K], S{s, s}, C{cm1, cm1};
   z.v[J] = a + (C * a + S * b);
@@ -151,7 +151,7 @@ inline void rotate(PhaseT<R>& z, R s, R cm1) {
 /// Passengers (pairs of body-frame vectors held as PhaseT, e.g. the rows of the attitude R) turn
 /// with the same sin θ and cos θ − 1.
 template <int I, class R, class... A>
-inline void axis_flow(PhaseT<R>& z, R ta, R tb, A&... passengers) {
+[[gnu::always_inline]] inline void axis_flow(PhaseT<R>& z, R ta, R tb, A&... passengers) {
   R s, cm1;
   sin_cosm1(z.m(I) * ta + tb, s, cm1);
   rotate<I>(z, s, cm1);
