@@ -76,6 +76,29 @@ Steps odeint_rk4_steps() {
   };
 }
 
+// The latency floor of splitting2's step (axes split, kick inside: T(h/2) K(h) T(h/2)): the same
+// sub-flows on a phase point held in registers from step to step, without the State the stepper
+// reads and writes; with the kick (the whole step) or its ten rotations alone. Each rotation's
+// angle depends on the momentum the one before produced, so these run at the latency of that chain.
+template <bool Kick>
+Steps splitting2_floor_steps() {
+  using P = detail::Axes<0, 1, 2>;  // the bench body's moments increase along x, y, z
+  const QuadraticModel m = bench_model();
+  SplitFrame f;
+  for (int w = 0; w < 3; ++w) {
+    f.rate[w] = 1.0 / m.body.inertia()[w];
+    f.k_over_i[w] = m.body.gyrostat()[w] / m.body.inertia()[w];
+  }
+  return [m, f, z = detail::to_phase<P>(bench_state(m))](std::int64_t n) mutable {
+    for (std::int64_t i = 0; i < n; ++i) {
+      detail::AxesFlow::flow<P>(z, f, m.body, 0.5 * kStep);
+      if constexpr (Kick) detail::kick<P>(z, m, kStep);
+      detail::AxesFlow::flow<P>(z, f, m.body, 0.5 * kStep);
+    }
+    benchmark::DoNotOptimize(z);  // z stays in registers through the loop
+  };
+}
+
 std::map<std::string, std::function<Steps()>> benchmarks() {
   std::map<std::string, std::function<Steps()>> b;
   for (const char* name : {"splitting2", "splitting4", "splitting6", "splitting8"}) {
@@ -96,6 +119,8 @@ std::map<std::string, std::function<Steps()>> benchmarks() {
           make_splitting(name, FreeBodySplit::spin));
     };
   }
+  b["splitting2_axes_floor_step"] = splitting2_floor_steps<true>;
+  b["splitting2_axes_floor_rotations"] = splitting2_floor_steps<false>;
   b["newtop_rk4"] = [] { return newtop_steps(Rk4Stepper()); };
   b["newtop_rk4_attitude"] = [] { return newtop_steps<Rk4Stepper, OrientedState>(Rk4Stepper()); };
   b["dopri5_fixed_step"] = [] {

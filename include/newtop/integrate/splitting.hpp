@@ -204,48 +204,56 @@ struct ExactFlow {
 template <class X>
 using StepResult = std::conditional_t<kOriented<X>, double, void>;
 
-/// One stage of a step: the kick K(b_i h) (skipped when b_i = 0), then T(a_i h).
-template <class P, class T, Field F, class... A>
-[[gnu::always_inline]] inline void run_stage(Phase& z, const BasicModel<F>& model,
-                                             const SplitFrame& f, double b, double a, double h,
-                                             A&... passengers) {
-  if (b != 0.0) kick<P>(z, model, b * h);
-  T::template flow<P>(z, f, model.body, a * h, passengers...);
+/// The shape of a step known at compile time: any table (the loop over the coefficients, a zero
+/// kick skipped), or splitting2's T(a₁h) K(b₁h) T(a₂h) (b₀ = b₂ = 0) and K(b₀h) T(a₁h) K(b₁h)
+/// written out, without the loop and the tests of b (the state then stays in registers).
+enum class StepShape { any, tkt, ktk };
+
+/// The shape of the coefficients c.
+inline StepShape step_shape(const SplittingCoefficients& c) {
+  if (c.a.size() == 2 && c.b[0] == 0.0 && c.b[1] != 0.0 && c.b[2] == 0.0) return StepShape::tkt;
+  if (c.a.size() == 1 && c.b[0] != 0.0 && c.b[1] != 0.0) return StepShape::ktk;
+  return StepShape::any;
 }
 
-/// All stages of a step, the last kick included: N > 0 stages unrolled at compile time (the
-/// state stays in registers through the kicks), N = 0 the generic loop over c.a.size().
-template <class P, class T, std::size_t N, Field F, class... A>
+/// All stages of a step, the last kick included, for coefficients of the shape S.
+template <class P, class T, StepShape S, Field F, class... A>
 [[gnu::always_inline]] inline void run_stages(Phase& z, const BasicModel<F>& model,
                                               const SplitFrame& f, const SplittingCoefficients& c,
                                               double h, A&... passengers) {
   const double* a = c.a.data();
   const double* b = c.b.data();
-  std::size_t s = N;
-  if constexpr (N == 0) {
-    s = c.a.size();
-    for (std::size_t i = 0; i < s; ++i) run_stage<P, T>(z, model, f, b[i], a[i], h, passengers...);
+  if constexpr (S == StepShape::tkt) {
+    T::template flow<P>(z, f, model.body, a[0] * h, passengers...);
+    kick<P>(z, model, b[1] * h);
+    T::template flow<P>(z, f, model.body, a[1] * h, passengers...);
+  } else if constexpr (S == StepShape::ktk) {
+    kick<P>(z, model, b[0] * h);
+    T::template flow<P>(z, f, model.body, a[0] * h, passengers...);
+    kick<P>(z, model, b[1] * h);
   } else {
-    run_stage<P, T>(z, model, f, b[0], a[0], h, passengers...);
-    if constexpr (N >= 2) run_stage<P, T>(z, model, f, b[1], a[1], h, passengers...);
-    static_assert(N <= 2);
+    const std::size_t s = c.a.size();
+    for (std::size_t i = 0; i < s; ++i) {
+      if (b[i] != 0.0) kick<P>(z, model, b[i] * h);
+      T::template flow<P>(z, f, model.body, a[i] * h, passengers...);
+    }
+    if (b[s] != 0.0) kick<P>(z, model, b[s] * h);
   }
-  if (b[s] != 0.0) kick<P>(z, model, b[s] * h);
 }
 
-/// One step in the frame P with N stages (0: any number; see run_stages), an attitude's rows
+/// One step in the frame P for coefficients of the shape S (see run_stages), an attitude's rows
 /// carried as passengers.
-template <class P, class T, std::size_t N, Field F, class X>
+template <class P, class T, StepShape S, Field F, class X>
 [[gnu::flatten]] StepResult<X> run_step(const BasicModel<F>& model, X& x, const SplitFrame& f,
                                         const SplittingCoefficients& c, double h) {
   Phase z = to_phase<P>(x);
   if constexpr (kOriented<X>) {
     AttitudePhase r = to_attitude_phase<P>(x.q);
-    run_stages<P, T, N>(z, model, f, c, h, r.a, r.b);
+    run_stages<P, T, S>(z, model, f, c, h, r.a, r.b);
     to_state<P>(z, x);
     return from_attitude_phase<P>(r, x.q);
   } else {
-    run_stages<P, T, N>(z, model, f, c, h);
+    run_stages<P, T, S>(z, model, f, c, h);
     to_state<P>(z, x);
   }
 }
@@ -254,36 +262,35 @@ template <Field F, class X = State>
 using StepKernel = StepResult<X> (*)(const BasicModel<F>&, X&, const SplitFrame&,
                                      const SplittingCoefficients&, double);
 
-/// The kernel of T with N stages for the permutation (axis[0], axis[1], axis[2]).
-template <class T, std::size_t N, Field F, class X = State>
+/// The kernel of T for the shape S and the permutation (axis[0], axis[1], axis[2]).
+template <class T, StepShape S, Field F, class X = State>
 StepKernel<F, X> step_kernel(const std::array<int, 3>& axis) {
   switch (axis[0] * 3 + axis[1]) {
     case 1:
-      return &run_step<Axes<0, 1, 2>, T, N, F, X>;
+      return &run_step<Axes<0, 1, 2>, T, S, F, X>;
     case 2:
-      return &run_step<Axes<0, 2, 1>, T, N, F, X>;
+      return &run_step<Axes<0, 2, 1>, T, S, F, X>;
     case 3:
-      return &run_step<Axes<1, 0, 2>, T, N, F, X>;
+      return &run_step<Axes<1, 0, 2>, T, S, F, X>;
     case 5:
-      return &run_step<Axes<1, 2, 0>, T, N, F, X>;
+      return &run_step<Axes<1, 2, 0>, T, S, F, X>;
     case 6:
-      return &run_step<Axes<2, 0, 1>, T, N, F, X>;
+      return &run_step<Axes<2, 0, 1>, T, S, F, X>;
     default:
-      return &run_step<Axes<2, 1, 0>, T, N, F, X>;
+      return &run_step<Axes<2, 1, 0>, T, S, F, X>;
   }
 }
 
-/// The kernel of T for the permutation and the number of stages: the step of splitting2 (one or
-/// two stages) unrolled, any other the generic loop.
+/// The kernel of T for the permutation and the shape of the coefficients.
 template <class T, Field F, class X = State>
-StepKernel<F, X> step_kernel(const std::array<int, 3>& axis, std::size_t stages) {
-  switch (stages) {
-    case 1:
-      return step_kernel<T, 1, F, X>(axis);
-    case 2:
-      return step_kernel<T, 2, F, X>(axis);
+StepKernel<F, X> step_kernel(const std::array<int, 3>& axis, StepShape shape) {
+  switch (shape) {
+    case StepShape::tkt:
+      return step_kernel<T, StepShape::tkt, F, X>(axis);
+    case StepShape::ktk:
+      return step_kernel<T, StepShape::ktk, F, X>(axis);
     default:
-      return step_kernel<T, 0, F, X>(axis);
+      return step_kernel<T, StepShape::any, F, X>(axis);
   }
 }
 
@@ -301,7 +308,8 @@ class SplittingStepper {
   SplittingStepper(const CompositionTable& table, SplitOrdering ordering)
       : order_(table.order),
         ordering_(ordering),
-        coefficients_(splitting_coefficients(table, ordering)) {}
+        coefficients_(splitting_coefficients(table, ordering)),
+        shape_(detail::step_shape(coefficients_)) {}
 
   int order() const { return order_; }
   /// The most sub-flows (kicks, rotations, spins or exact free-body flows) one step applies.
@@ -322,6 +330,7 @@ class SplittingStepper {
   int order_;
   SplitOrdering ordering_;
   SplittingCoefficients coefficients_;
+  detail::StepShape shape_;
   // Per-model constants, recomputed when the body changes.
   Vec3 inertia_key_ = Vec3::Constant(NAN);
   Vec3 gyrostat_key_ = Vec3::Constant(NAN);
@@ -339,16 +348,16 @@ void SplittingStepper::step(const BasicModel<F>& model, X& x, double h) {
   detail::StepKernel<F, X> kernel = nullptr;
   switch (ordering_.free_body) {
     case FreeBodySplit::axes:
-      kernel = detail::step_kernel<detail::AxesFlow, F, X>(frame_.axis, coefficients_.a.size());
+      kernel = detail::step_kernel<detail::AxesFlow, F, X>(frame_.axis, shape_);
       break;
     case FreeBodySplit::spin:
-      kernel = frame_.gyrostat_ref ? detail::step_kernel<detail::SpinFlow<true>, F, X>(
-                                         frame_.axis, coefficients_.a.size())
-                                   : detail::step_kernel<detail::SpinFlow<false>, F, X>(
-                                         frame_.axis, coefficients_.a.size());
+      kernel = frame_.gyrostat_ref
+                   ? detail::step_kernel<detail::SpinFlow<true>, F, X>(frame_.axis, shape_)
+                   : detail::step_kernel<detail::SpinFlow<false>, F, X>(frame_.axis, shape_);
       break;
     case FreeBodySplit::exact:
-      kernel = &detail::run_step<detail::Axes<0, 1, 2>, detail::ExactFlow, 0, F, X>;
+      kernel =
+          &detail::run_step<detail::Axes<0, 1, 2>, detail::ExactFlow, detail::StepShape::any, F, X>;
       break;
   }
   if constexpr (kOriented<X>) {
