@@ -5,8 +5,9 @@
 ///   K(b₀h) T(a₁h) K(b₁h) … T(a_s h) K(b_s h),
 /// with T the free-body flow (split into axis rotations, or solved exactly) and the coefficients
 /// taken from a CompositionTable. Every sub-flow preserves γ·γ and m·γ exactly and is a Poisson
-/// map, so every step is a Poisson integrator. One generic loop runs every table; the sub-flows of
-/// T are unrolled at compile time (sub_flows.hpp), and the per-model constants are computed once.
+/// map, so every step is a Poisson integrator. One generic loop runs every table, splitting2's two
+/// shapes (T K T, K T K) are written out (detail::StepShape); the sub-flows of T are unrolled at
+/// compile time (sub_flows.hpp), and the per-model constants are computed once.
 ///
 /// A state with an attitude (OrientedState) carries the rows of R, Rᵀ e_a, through the step as
 /// passengers of every sub-flow: each rotation turns them with the same sin θ and cos θ − 1 as it
