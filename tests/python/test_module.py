@@ -278,3 +278,14 @@ def test_simulate_with_an_attitude_gives_the_programs_quaternion_columns(tmp_pat
     assert "quaternion" not in newtop.integrate(sc.model, sc.initial, 2.0, step=0.01)
     with pytest.raises(ValueError, match="quaternion: expected a finite unit quaternion"):
         newtop.integrate(sc.model, sc.initial, 1.0, step=0.01, quaternion=[1.0, 0.1, 0, 0])
+
+
+def test_integrate_takes_the_split_of_the_command_line():
+    sc = newtop.load_scenario(example("brun.toml"))
+    run = newtop.integrate(sc, t_end=3.0, split="spin")
+    cli = program_json("simulate", example("brun.toml"), "--t-end", "3", "--split", "spin")
+    assert cli["split"] == "spin"
+    assert run["gamma"][-1].tolist() == cli["final"]["gamma"]  # the same run, bit for bit
+    assert run["gamma"][-1].tolist() != newtop.integrate(sc, t_end=3.0)["gamma"][-1].tolist()
+    with pytest.raises(ValueError, match="split"):
+        newtop.integrate(sc, t_end=1.0, tol=1e-9, split="spin")
