@@ -12,9 +12,7 @@ namespace newtop::phase {
 EnsembleTangentStepper::EnsembleTangentStepper(const CompositionTable& table,
                                                const SplitOrdering& ordering, SimdPath path)
     : order_(table.order), ordering_(ordering), path_(path) {
-  if (ordering.free_body != FreeBodySplit::axes) {
-    throw InputError("split: expected the axes split of the free body for the tangent map");
-  }
+  check_tangent_split(ordering.free_body);
   if (!simd_path_available(path)) {
     throw InputError("simd: expected a path this build and CPU support, found " +
                      std::string(simd_path_name(path)));

@@ -27,35 +27,29 @@ void axis_flow_tangent(const Body& body, int a, double t, State& x, Tangent& V) 
   }
 }
 
+void check_tangent_split(FreeBodySplit split) {
+  if (split != FreeBodySplit::axes) {
+    throw InputError("split: expected the axes split of the free body for the tangent map, found " +
+                     std::string(to_string(split)));
+  }
+}
+
 void check_tangent_method(const MethodSettings& settings) {
   validate(settings);
-  const MethodInfo& info = method_info(settings.name);
-  if (info.kind == MethodKind::splitting) {
-    const CompositionTable& table = composition_table(settings.name);
-    const SplitOrdering o = settings.ordering.value_or(default_ordering(table));
-    if (o.free_body != FreeBodySplit::axes) {
-      throw InputError(
-          "split: expected the axes split of the free body for the tangent map, found " +
-          std::string(o.free_body == FreeBodySplit::spin ? "spin" : "exact"));
-    }
+  if (method_info(settings.name).kind == MethodKind::splitting) {
+    check_tangent_split(free_body_split(settings));
   }
 }
 
 TangentSplittingStepper::TangentSplittingStepper(const CompositionTable& table,
                                                  const SplitOrdering& ordering)
     : order_(table.order), ordering_(ordering), c_(splitting_coefficients(table, ordering)) {
-  if (ordering.free_body != FreeBodySplit::axes) {
-    throw InputError("split: expected the axes split of the free body for the tangent map, found " +
-                     std::string(ordering.free_body == FreeBodySplit::spin ? "spin" : "exact"));
-  }
+  check_tangent_split(ordering.free_body);
 }
 
 TangentSplittingStepper::TangentSplittingStepper(const SplittingStepper& stepper)
     : order_(stepper.order()), ordering_(stepper.ordering()), c_(stepper.coefficients()) {
-  if (ordering_.free_body != FreeBodySplit::axes) {
-    throw InputError("split: expected the axes split of the free body for the tangent map, found " +
-                     std::string(ordering_.free_body == FreeBodySplit::spin ? "spin" : "exact"));
-  }
+  check_tangent_split(ordering_.free_body);
 }
 
 void TangentSplittingStepper::free_body(const Body& body, double t, State& x, Tangent& V) const {

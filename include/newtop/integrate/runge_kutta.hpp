@@ -97,7 +97,7 @@ struct OdeSystem {
 /// multiplied by the rounded 1/I, λI rounded once).
 template <class Y>
 struct OdeSystem<QuadraticField, Y> {
-  OdeSystem(const QuadraticModel* m) : model(m) {  // implicit: built as OdeSystem<F>{&model}
+  OdeSystem(const QuadraticModel* m) {  // implicit: built as OdeSystem<F>{&model}
     const Vec3& I = m->body.inertia();
     const double mg = m->body.mass() * m->field.g;
     for (int i = 0; i < 3; ++i) {
@@ -123,7 +123,6 @@ struct OdeSystem<QuadraticField, Y> {
     }
   }
 
-  const QuadraticModel* model;
   std::array<double, 3> inv_i{}, k{}, b{}, li{};
 };
 

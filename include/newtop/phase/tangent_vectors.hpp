@@ -16,4 +16,8 @@ using Tangent = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6>;
 /// too): a splitting method needs the axes split of the free body.
 void check_tangent_method(const MethodSettings& settings);
 
+/// Throws InputError naming `split` unless the free body is split into axis rotations (the split
+/// the tangent map is written for).
+void check_tangent_split(FreeBodySplit split);
+
 }  // namespace newtop::phase
