@@ -67,10 +67,10 @@ Method peer(std::string label) {
           }};
 }
 
-Method newtop_rkf78() {
-  return {"newtop rkf78 (odeint through newtop)", true,
-          [](const Regime& r, double tol, bool observe) {
-            Fehlberg78Stepper s(tol, tol);
+template <class Stepper>
+Method newtop_adaptive(std::string label) {
+  return {std::move(label), true, [](const Regime& r, double tol, bool observe) {
+            Stepper s(tol, tol);
             EnergyWatch w{&r.model, energy(r.model, r.x0)};
             const Outcome out = observe ? integrate(s, r.model, r.x0, 0.0, r.T, {},
                                                     [&](double, const State& x) { w(x); })
@@ -96,7 +96,8 @@ std::vector<Method> methods(bool exact_allowed) {
       m.push_back(splitting(std::string(t.name) + " (exact free body)", t, exact));
     }
   }
-  m.push_back(newtop_rkf78());
+  m.push_back(newtop_adaptive<Dop853Stepper>("newtop dop853"));
+  m.push_back(newtop_adaptive<Fehlberg78Stepper>("newtop rkf78 (odeint through newtop)"));
   m.push_back(peer<ode::runge_kutta_fehlberg78<OdeState>>("odeint rkf78 (peer)"));
   m.push_back(peer<ode::runge_kutta_dopri5<OdeState>>("odeint dopri5 (peer)"));
   return m;

@@ -12,7 +12,7 @@ void add_integration_options(CLI::App& sub, std::optional<double>& t_end,
   sub.add_option("--t-end", t_end, "final time (overrides [integrate] t_end)");
   sub.add_option("--method", method,
                  "method: splitting2, splitting4, splitting4-yoshida, splitting6, splitting8, "
-                 "splitting8-mclachlan, rk4, dopri5, rkf78");
+                 "splitting8-mclachlan, rk4, dopri5, rkf78, dop853");
   auto* s = sub.add_option("--step", step, "fixed step (selects splitting6 by default)");
   auto* t =
       sub.add_option("--tol", tol, "absolute and relative tolerance (selects rkf78 by default)");

@@ -16,6 +16,8 @@ std::vector<MethodInfo> make_methods() {
   m.push_back({"rk4", MethodKind::fixed_rk, 4, "classical Runge–Kutta, fixed step (Boost.Odeint)"});
   m.push_back({"dopri5", MethodKind::adaptive, 5, "Dormand–Prince 5(4), adaptive (Boost.Odeint)"});
   m.push_back({"rkf78", MethodKind::adaptive, 8, "Fehlberg 7(8), adaptive (Boost.Odeint)"});
+  m.push_back({"dop853", MethodKind::adaptive, 8,
+               "Dormand–Prince 8(5,3), adaptive, dense output of order 7"});
   return m;
 }
 

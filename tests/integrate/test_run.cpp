@@ -26,11 +26,9 @@ std::vector<Model> models() {
 }
 
 std::vector<MethodSettings> methods_to_try() {
-  return {{"splitting2", 0.01, 0, 0, std::nullopt},
-          {"splitting6", 0.02, 0, 0, std::nullopt},
-          {"rk4", 0.01, 0, 0, std::nullopt},
-          {"dopri5", 0.0, 1e-9, 1e-9, std::nullopt},
-          {"rkf78", 0.0, 1e-11, 1e-11, std::nullopt}};
+  return {{"splitting2", 0.01, 0, 0, std::nullopt},   {"splitting6", 0.02, 0, 0, std::nullopt},
+          {"rk4", 0.01, 0, 0, std::nullopt},          {"dopri5", 0.0, 1e-9, 1e-9, std::nullopt},
+          {"rkf78", 0.0, 1e-11, 1e-11, std::nullopt}, {"dop853", 0.0, 1e-11, 1e-11, std::nullopt}};
 }
 
 void expect_same(const Outcome& a, const Outcome& b, const std::string& what) {

@@ -102,7 +102,7 @@ TEST(Chaos, GenericHeavyBodyIsChaotic) {
   // methods).
   const phase::ChaosSample r = indicators(model, x0, T, fixed("rk4", 0.01));
   EXPECT_NEAR(r.lyapunov_max, a.lyapunov_max, 0.01 * a.lyapunov_max);
-  for (const char* pair : {"rkf78", "dopri5"}) {
+  for (const char* pair : {"rkf78", "dopri5", "dop853"}) {
     MethodSettings m;
     m.name = pair;
     m.abs_tol = m.rel_tol = 1e-11;

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "newtop/integrate/dop853.hpp"
 #include "newtop/integrate/driver.hpp"
 #include "newtop/integrate/method_settings.hpp"
 #include "newtop/integrate/runge_kutta.hpp"
@@ -32,6 +33,10 @@ decltype(auto) with_stepper(const MethodSettings& settings, Fn&& fn) {
   }
   if (settings.name == "dopri5") {
     Dopri5Stepper s(settings.abs_tol, settings.rel_tol);
+    return fn(s);
+  }
+  if (settings.name == "dop853") {
+    Dop853Stepper s(settings.abs_tol, settings.rel_tol);
     return fn(s);
   }
   Fehlberg78Stepper s(settings.abs_tol, settings.rel_tol);

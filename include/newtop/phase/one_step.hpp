@@ -2,9 +2,11 @@
 /// \file
 /// The one-step map x ↦ Φ_h(x) of a stepper of the conformance suite, for any h: a fixed-step
 /// method's own step; for an embedded Runge–Kutta pair, one step of the pair's propagated formula
-/// with no error control (the formula every accepted step of the adaptive run applies). Event
-/// location lands on a surface with it, so that a located point lies on the method's own solution.
+/// with no error control (the formula every accepted step of the adaptive run applies;
+/// Dormand–Prince 8(5,3) likewise). Event location lands on a surface with it, so that a located
+/// point lies on the method's own solution.
 
+#include "newtop/integrate/dop853.hpp"
 #include "newtop/integrate/runge_kutta.hpp"
 
 namespace newtop::phase {
@@ -41,6 +43,20 @@ class OneStepMap<EmbeddedRkStepper<E, Order>> {
 
  private:
   E e_;
+};
+
+/// Dormand–Prince 8(5,3): one step of its order-8 formula (Dop853Core::step).
+template <>
+class OneStepMap<Dop853Stepper> {
+ public:
+  explicit OneStepMap(const Dop853Stepper& s) : core_(s.abs_tol(), s.rel_tol()) {}
+  template <Field F>
+  State operator()(const BasicModel<F>& model, const State& x, double h) {
+    return from_ode(core_.step(OdeSystem<F>{&model}, to_ode(x), 0.0, h));
+  }
+
+ private:
+  newtop::detail::Dop853Core<OdeState> core_;
 };
 
 }  // namespace newtop::phase

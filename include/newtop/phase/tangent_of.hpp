@@ -76,6 +76,12 @@ struct TangentOf<EmbeddedRkStepper<E, Order>> {
   static type make(const EmbeddedRkStepper<E, Order>& s) { return type(s.abs_tol(), s.rel_tol()); }
 };
 
+template <>
+struct TangentOf<Dop853Stepper> {
+  using type = TangentDop853Stepper;
+  static type make(const Dop853Stepper& s) { return type(s.abs_tol(), s.rel_tol()); }
+};
+
 /// The tangent stepper of a scalar stepper (same method, same coefficients or tolerances).
 template <class S>
 typename TangentOf<S>::type tangent_of(const S& stepper) {

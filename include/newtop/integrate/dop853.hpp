@@ -1,0 +1,302 @@
+#pragma once
+/// \file
+/// Dormand and Prince's Runge–Kutta pair 8(5,3) (dop853_tableau.hpp) with Hairer's error control
+/// and its continuous extension of order 7: newtop's adaptive method of order 8. Per accepted step
+/// 12 evaluations of f (the end point's f is the next step's first stage); the error of the step
+/// is estimated from the embedded solutions of orders 5 and 3 together (Hairer, Nørsett & Wanner,
+/// Solving ODEs I, §II.10): with sc_i = abs_tol + rel_tol max(|y0_i|, |y1_i|),
+/// e5 = Σ (h (Σ_j e5_j k_j)_i / sc_i)², e3 = Σ (h (Σ_j (b_j − b̂_j) k_j)_i / sc_i)²,
+/// err = e5 / sqrt(n (e5 + 0.01 e3)) — a step is accepted when err ≤ 1, and the next step is
+/// h err^(−1/8) · 0.9, changed by a factor between 1/3 and 6 (not increased after a rejection).
+/// A trial that gives NaN or inf is rejected and retried kNonFiniteShrink times shorter.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <tuple>
+
+#include "newtop/integrate/dop853_tableau.hpp"
+#include "newtop/integrate/runge_kutta.hpp"
+
+namespace newtop {
+namespace detail {
+
+/// The pair on one ODE state type Y (std::array of n numbers) and any system sys(y, dydt, t).
+template <class Y>
+class Dop853Core {
+  static constexpr std::size_t n = std::tuple_size_v<Y>;
+
+ public:
+  static constexpr int kOrder = 8;
+  static constexpr double kSafety = 0.9, kMinFactor = 1.0 / 3.0, kMaxFactor = 6.0;
+
+  Dop853Core(double abs_tol, double rel_tol) : abs_tol_(abs_tol), rel_tol_(rel_tol) {}
+
+  /// The first trial step from (t0, y0) towards t0 + span (starting_step of order 8).
+  template <class Sys>
+  double initial_step(const Sys& sys, const Y& y0, double t0, double span) {
+    at_point(sys, y0, t0);
+    return starting_step(sys, y_, f_, t0, span, abs_tol_, rel_tol_, kOrder);
+  }
+
+  /// One trial step of dt from (t, y): on acceptance y and t advance (y to the method's own end
+  /// point, which point() then holds). dt becomes the next step either way.
+  template <class Sys>
+  bool try_step(const Sys& sys, Y& y, double& t, double& dt) {
+    namespace T = dop853;
+    at_point(sys, y, t);
+    const double h = dt;
+    Y y1;
+    advance(sys, t, h, y1);
+    // The two error estimates.
+    const auto& k = k_;
+    const auto& b = T::b;
+    const auto& e = T::e5;
+    double e5 = 0.0, e3 = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double bk = b[0] * k[0][i] + b[5] * k[5][i] + b[6] * k[6][i] + b[7] * k[7][i] +
+                        b[8] * k[8][i] + b[9] * k[9][i] + b[10] * k[10][i] + b[11] * k[11][i];
+      const double err5 = e[0] * k[0][i] + e[5] * k[5][i] + e[6] * k[6][i] + e[7] * k[7][i] +
+                          e[8] * k[8][i] + e[9] * k[9][i] + e[10] * k[10][i] + e[11] * k[11][i];
+      const double err3 = bk - T::bhh[0] * k[0][i] - T::bhh[1] * k[8][i] - T::bhh[2] * k[11][i];
+      const double sc = abs_tol_ + rel_tol_ * std::max(std::abs(y_[i]), std::abs(y1[i]));
+      e5 += (err5 / sc) * (err5 / sc);
+      e3 += (err3 / sc) * (err3 / sc);
+    }
+    double deno = e5 + 0.01 * e3;
+    if (deno <= 0.0) deno = 1.0;
+    const double err = std::abs(h) * e5 / std::sqrt(static_cast<double>(n) * deno);
+    if (!std::isfinite(err) || !all_finite(y1)) {
+      dt = kNonFiniteShrink * h;
+      rejected_ = true;
+      return false;
+    }
+    const double grow = std::pow(err, 1.0 / kOrder) / kSafety;  // h_new = h / grow
+    if (err > 1.0) {
+      dt = h / std::min(grow, 1.0 / kMinFactor);
+      rejected_ = true;
+      return false;
+    }
+    double h_new = h / std::clamp(grow, 1.0 / kMaxFactor, 1.0 / kMinFactor);
+    if (rejected_) h_new = std::abs(h_new) < std::abs(h) ? h_new : h;
+    rejected_ = false;
+    // Accepted: keep the step for the continuous extension; f at the end is the next first stage.
+    y0_ = y_;
+    y1_ = y1;
+    t0_ = t;
+    h_ = h;
+    t += h;
+    sys(y1_, k_[12], t);
+    y_ = y1_;
+    f_ = k[12];
+    has_f_ = true;
+    ++step_id_;
+    y = y_;
+    dt = h_new;
+    return true;
+  }
+
+  /// One step of the order-8 formula from (t, y) with no error control: the map every accepted
+  /// step applies (event location lands on the method's own solution with it); f(y) evaluated
+  /// afresh.
+  template <class Sys>
+  Y step(const Sys& sys, const Y& y, double t, double h) {
+    has_f_ = false;
+    at_point(sys, y, t);
+    Y y1;
+    advance(sys, t, h, y1);
+    return y1;
+  }
+
+  /// The current point and f there (after an accepted step: its end); a caller may rescale both
+  /// (the attitude's renormalisation) before the next step.
+  Y& point() { return y_; }
+  Y& derivative() { return f_; }
+
+  /// The continuous extension of order 7 of the last accepted step at t (3 more evaluations of f
+  /// on first use per step).
+  template <class Sys>
+  Y dense(const Sys& sys, double t) {
+    if (dense_id_ != step_id_) build_dense(sys);
+    const double s = (t - t0_) / h_, s1 = 1.0 - s;
+    const auto& F = dense_;
+    Y y;
+    for (std::size_t i = 0; i < n; ++i) {
+      y[i] =
+          y0_[i] + s * (F[0][i] +
+                        s1 * (F[1][i] +
+                              s * (F[2][i] +
+                                   s1 * (F[3][i] + s * (F[4][i] + s1 * (F[5][i] + s * F[6][i]))))));
+    }
+    return y;
+  }
+
+ private:
+  /// The stages k_1 … k_11 of a step of h from (t, y_) (k_0 = f_) and the order-8 end point y1.
+  template <class Sys>
+  void advance(const Sys& sys, double t, double h, Y& y1) {
+    namespace T = dop853;
+    auto& k = k_;
+    k[0] = f_;
+    Y z;
+    auto stage = [&](int s, auto&& combine) {
+      for (std::size_t i = 0; i < n; ++i) z[i] = y_[i] + h * combine(i);
+      sys(z, k[s], t + T::c[s] * h);
+    };
+    const auto& a = T::a;
+    stage(1, [&](std::size_t i) { return a[1][0] * k[0][i]; });
+    stage(2, [&](std::size_t i) { return a[2][0] * k[0][i] + a[2][1] * k[1][i]; });
+    stage(3, [&](std::size_t i) { return a[3][0] * k[0][i] + a[3][2] * k[2][i]; });
+    stage(4,
+          [&](std::size_t i) { return a[4][0] * k[0][i] + a[4][2] * k[2][i] + a[4][3] * k[3][i]; });
+    stage(5,
+          [&](std::size_t i) { return a[5][0] * k[0][i] + a[5][3] * k[3][i] + a[5][4] * k[4][i]; });
+    stage(6, [&](std::size_t i) {
+      return a[6][0] * k[0][i] + a[6][3] * k[3][i] + a[6][4] * k[4][i] + a[6][5] * k[5][i];
+    });
+    stage(7, [&](std::size_t i) {
+      return a[7][0] * k[0][i] + a[7][3] * k[3][i] + a[7][4] * k[4][i] + a[7][5] * k[5][i] +
+             a[7][6] * k[6][i];
+    });
+    stage(8, [&](std::size_t i) {
+      return a[8][0] * k[0][i] + a[8][3] * k[3][i] + a[8][4] * k[4][i] + a[8][5] * k[5][i] +
+             a[8][6] * k[6][i] + a[8][7] * k[7][i];
+    });
+    stage(9, [&](std::size_t i) {
+      return a[9][0] * k[0][i] + a[9][3] * k[3][i] + a[9][4] * k[4][i] + a[9][5] * k[5][i] +
+             a[9][6] * k[6][i] + a[9][7] * k[7][i] + a[9][8] * k[8][i];
+    });
+    stage(10, [&](std::size_t i) {
+      return a[10][0] * k[0][i] + a[10][3] * k[3][i] + a[10][4] * k[4][i] + a[10][5] * k[5][i] +
+             a[10][6] * k[6][i] + a[10][7] * k[7][i] + a[10][8] * k[8][i] + a[10][9] * k[9][i];
+    });
+    stage(11, [&](std::size_t i) {
+      return a[11][0] * k[0][i] + a[11][3] * k[3][i] + a[11][4] * k[4][i] + a[11][5] * k[5][i] +
+             a[11][6] * k[6][i] + a[11][7] * k[7][i] + a[11][8] * k[8][i] + a[11][9] * k[9][i] +
+             a[11][10] * k[10][i];
+    });
+    const auto& b = T::b;
+    for (std::size_t i = 0; i < n; ++i) {
+      y1[i] = y_[i] + h * (b[0] * k[0][i] + b[5] * k[5][i] + b[6] * k[6][i] + b[7] * k[7][i] +
+                           b[8] * k[8][i] + b[9] * k[9][i] + b[10] * k[10][i] + b[11] * k[11][i]);
+    }
+  }
+
+  template <class Sys>
+  void at_point(const Sys& sys, const Y& y, double t) {
+    if (has_f_ && y == y_) return;
+    y_ = y;
+    sys(y_, f_, t);
+    has_f_ = true;
+  }
+
+  template <class Sys>
+  void build_dense(const Sys& sys) {
+    namespace T = dop853;
+    auto& k = k_;
+    const double h = h_;
+    for (int s = T::kStages + 1; s < T::kExtendedStages; ++s) {
+      Y z;
+      for (std::size_t i = 0; i < n; ++i) {
+        double sum = 0.0;
+        for (int j = 0; j < s; ++j) sum += T::a[s][j] * k[j][i];
+        z[i] = y0_[i] + h * sum;
+      }
+      sys(z, k[s], t0_ + T::c[s] * h);
+    }
+    auto& F = dense_;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double dy = y1_[i] - y0_[i];
+      F[0][i] = dy;
+      F[1][i] = h * k[0][i] - dy;
+      F[2][i] = 2.0 * dy - h * (k[12][i] + k[0][i]);
+      for (int r = 0; r < 4; ++r) {
+        double sum = 0.0;
+        for (int j = 0; j < T::kExtendedStages; ++j) sum += T::d[r][j] * k[j][i];
+        F[3 + r][i] = h * sum;
+      }
+    }
+    dense_id_ = step_id_;
+  }
+
+  double abs_tol_, rel_tol_;
+  Y y_{}, f_{};  // the current point and f there (when has_f_)
+  bool has_f_ = false, rejected_ = false;
+  std::array<Y, dop853::kExtendedStages> k_{};
+  Y y0_{}, y1_{};  // the last accepted step: its start and its own (unprojected) end
+  double t0_ = 0.0, h_ = 0.0;
+  std::array<Y, 7> dense_{};
+  std::int64_t step_id_ = 0, dense_id_ = -1;
+};
+
+}  // namespace detail
+
+/// Dormand–Prince 8(5,3) (detail::Dop853Core) on the Euler–Poisson equations: the AdaptiveStepper
+/// and DenseStepper of order 8. A state with an attitude runs the pair on the ten numbers
+/// (m, γ, q), q renormalised after each accepted step (the continuous extension is the method's,
+/// of the unprojected end point, renormalised).
+class Dop853Stepper {
+ public:
+  Dop853Stepper(double abs_tol, double rel_tol)
+      : abs_tol_(abs_tol),
+        rel_tol_(rel_tol),
+        plain_(abs_tol, rel_tol),
+        oriented_(abs_tol, rel_tol) {}
+
+  int order() const { return detail::Dop853Core<OdeState>::kOrder; }
+  double abs_tol() const { return abs_tol_; }
+  double rel_tol() const { return rel_tol_; }
+
+  template <Field F, PhaseState X>
+  double initial_step(const BasicModel<F>& model, const X& x, double t0, double t1) {
+    return core<X>().initial_step(OdeSystem<F, OdeStateOf<X>>{&model}, to_ode(x), t0, t1 - t0);
+  }
+
+  template <Field F, PhaseState X>
+  bool try_step(const BasicModel<F>& model, X& x, double& t, double& dt) {
+    auto& c = core<X>();
+    OdeStateOf<X> y = to_ode(x);
+    if (!c.try_step(OdeSystem<F, OdeStateOf<X>>{&model}, y, t, dt)) return false;
+    if constexpr (kOriented<X>) {
+      // q̇ is linear in q: f at the renormalised point is the same rescaling.
+      projection_ = std::max(projection_, detail::renormalise(c.point(), &c.derivative()));
+    }
+    x = from_ode(c.point());
+    return true;
+  }
+
+  /// The continuous extension of the last accepted step at t (between its ends).
+  template <Field F>
+  State dense_state(const BasicModel<F>& model, double t) {
+    return from_ode(plain_.dense(OdeSystem<F>{&model}, t));
+  }
+  /// The same for a run with an attitude (q renormalised).
+  template <Field F>
+  OrientedState dense_oriented_state(const BasicModel<F>& model, double t) {
+    OrientedOdeState y = oriented_.dense(OdeSystem<F, OrientedOdeState>{&model}, t);
+    detail::renormalise(y);
+    return from_ode(y);
+  }
+
+  /// The largest renormalisation |‖q‖ − 1| of the attitude in one step so far.
+  double attitude_projection() const { return projection_; }
+
+ private:
+  template <class X>
+  auto& core() {
+    if constexpr (kOriented<X>) {
+      return oriented_;
+    } else {
+      return plain_;
+    }
+  }
+
+  double abs_tol_, rel_tol_;
+  detail::Dop853Core<OdeState> plain_;
+  detail::Dop853Core<OrientedOdeState> oriented_;
+  double projection_ = 0.0;
+};
+
+}  // namespace newtop
