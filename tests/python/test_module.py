@@ -289,3 +289,15 @@ def test_integrate_takes_the_split_of_the_command_line():
     assert run["gamma"][-1].tolist() != newtop.integrate(sc, t_end=3.0)["gamma"][-1].tolist()
     with pytest.raises(ValueError, match="split"):
         newtop.integrate(sc, t_end=1.0, tol=1e-9, split="spin")
+
+
+def test_integrate_runs_dop853_as_the_command_line_does():
+    sc = newtop.load_scenario(example("brun.toml"))
+    run = newtop.integrate(sc, t_end=3.0, method="dop853", tol=1e-11)
+    cli = program_json("simulate", example("brun.toml"), "--t-end", "3", "--method", "dop853",
+                       "--tol", "1e-11")
+    assert run["method"] == cli["method"] == "dop853"
+    assert run["gamma"][-1].tolist() == cli["final"]["gamma"]  # the same run, bit for bit
+    # against Fehlberg 7(8) at 1e-13: both within 1e-9 of the motion over t = 3
+    ref = newtop.integrate(sc, t_end=3.0, method="rkf78", tol=1e-13)
+    assert np.max(np.abs(run["gamma"][-1] - ref["gamma"][-1])) < 1e-9
