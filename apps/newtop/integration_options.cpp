@@ -15,7 +15,7 @@ void add_integration_options(CLI::App& sub, std::optional<double>& t_end,
                  "splitting8-mclachlan, rk4, dopri5, rkf78, dop853");
   auto* s = sub.add_option("--step", step, "fixed step (selects splitting6 by default)");
   auto* t =
-      sub.add_option("--tol", tol, "absolute and relative tolerance (selects rkf78 by default)");
+      sub.add_option("--tol", tol, "absolute and relative tolerance (selects dop853 by default)");
   s->excludes(t);
   sub.add_option("--split", split,
                  "free-body split of the splitting methods: axes, spin or exact (overrides "

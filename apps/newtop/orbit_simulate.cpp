@@ -37,9 +37,9 @@ MethodSettings orbit_method(const io::OrbitScenario& sc, const std::optional<std
   MethodSettings m;
   m.name = method ? *method
            : cli_step || cli_tol
-               ? std::string(cli_step ? kDefaultFixedMethod : kDefaultAdaptiveMethod)
+               ? std::string(cli_step ? kDefaultFixedMethod : kOrbitAdaptiveMethod)
            : f.method ? *f.method
-                      : std::string(step ? kDefaultFixedMethod : kDefaultAdaptiveMethod);
+                      : std::string(step ? kDefaultFixedMethod : kOrbitAdaptiveMethod);
   if (m.name == "rkf78") {
     if (!tol) throw InputError(sc.source + ": tol: method rkf78 needs --tol or [integrate] tol");
     m.abs_tol = m.rel_tol = *tol;

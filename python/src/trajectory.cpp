@@ -153,7 +153,7 @@ void bind_trajectory(py::module_& m) {
       "Integrates the Euler-Poisson equations (spec section 4) from (t0, state) to t_end with a "
       "method by name (splitting2..8, rk4, dopri5, rkf78, dop853); a step selects splitting6 by "
       "default "
-      "and a tolerance rkf78. Returns a dict of numpy arrays over the accepted steps: t (N), "
+      "and a tolerance dop853. Returns a dict of numpy arrays over the accepted steps: t (N), "
       "omega, gamma, m (N x 3), energy, area, geometric[, brun][, lagrange] (N), all views of "
       "one (N x W) array 'table'; and 'outcome', 'steps', 'rejected', 'method', 'step'. With "
       "quaternion=[w, x, y, z] (the attitude, body -> inertial, scalar first; a unit one within "

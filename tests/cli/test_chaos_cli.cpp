@@ -48,7 +48,7 @@ TEST(ChaosCli, AdaptiveMethod) {
   const CliResult r = run("chaos " + brun() + " --t-end 20 --tol 1e-10 --json");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  EXPECT_EQ(j["method"], "rkf78");
+  EXPECT_EQ(j["method"], "dop853");
   EXPECT_TRUE(j["step"].is_null());
   EXPECT_EQ(j["tol"], 1e-10);
 }

@@ -30,8 +30,9 @@ const MethodInfo& method_info(std::string_view name);
 /// Default method when only a step is given: the splitting method with the best work–precision
 /// at moderate accuracy (docs/performance.md).
 inline constexpr std::string_view kDefaultFixedMethod = "splitting6";
-/// Default method when only a tolerance is given.
-inline constexpr std::string_view kDefaultAdaptiveMethod = "rkf78";
+/// Default method when only a tolerance is given: the adaptive method with the best work–precision
+/// in every regime measured (docs/performance.md).
+inline constexpr std::string_view kDefaultAdaptiveMethod = "dop853";
 
 /// What to run: a method by name with its step (fixed-step methods) or tolerances (adaptive).
 struct MethodSettings {

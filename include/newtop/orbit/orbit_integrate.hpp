@@ -117,6 +117,9 @@ OrbitOutcome integrate_adaptive(const EllipticOrbitModel& model, OrbitState x, d
 OrbitState rkf78_step(const CircularOrbitModel& model, const OrbitState& x, double t, double h);
 OrbitState rkf78_step(const EllipticOrbitModel& model, const OrbitState& x, double nu, double h);
 
+/// The adaptive method on an orbit (the default there when only a tolerance is given).
+inline constexpr std::string_view kOrbitAdaptiveMethod = "rkf78";
+
 /// Checks that a method runs on the orbit model: a splitting composition of composition_tables()
 /// (with settings.step > 0) or "rkf78" (with tolerances > 0); throws InputError naming `method`
 /// (listing the names that do) or the step or tolerance otherwise.
