@@ -79,6 +79,8 @@ int run(const ChaosArgs& a) {
     j["method"] = run.method.name;
     j["step"] = adaptive ? io::Json(nullptr) : io::Json(run.method.step);
     if (adaptive) j["tol"] = run.method.abs_tol;
+    const bool splitting = method_info(run.method.name).kind == MethodKind::splitting;
+    if (splitting) j["split"] = std::string(to_string(free_body_split(run.method)));
     j["outcome"] = to_string(r.outcome.status);
     print_json(std::cout, j);
   } else {
@@ -92,8 +94,11 @@ int run(const ChaosArgs& a) {
     }
     std::cout << "t = " << format_number(r.outcome.t) << ", method " << run.method.name
               << (adaptive ? ", tol " : ", step ")
-              << format_number(adaptive ? run.method.abs_tol : run.method.step) << ", outcome "
-              << to_string(r.outcome.status) << '\n';
+              << format_number(adaptive ? run.method.abs_tol : run.method.step)
+              << (method_info(run.method.name).kind == MethodKind::splitting
+                      ? " (" + std::string(to_string(free_body_split(run.method))) + " split)"
+                      : std::string())
+              << ", outcome " << to_string(r.outcome.status) << '\n';
     if (a.out) std::cout << "history written to " << *a.out << '\n';
   }
   return r.outcome.status == Status::finished ? kExitOk : kExitIncomplete;

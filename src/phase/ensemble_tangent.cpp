@@ -12,7 +12,7 @@ namespace newtop::phase {
 EnsembleTangentStepper::EnsembleTangentStepper(const CompositionTable& table,
                                                const SplitOrdering& ordering, SimdPath path)
     : order_(table.order), ordering_(ordering), path_(path) {
-  check_tangent_split(ordering.free_body);
+  check_ensemble_tangent_split(ordering.free_body);
   if (!simd_path_available(path)) {
     throw InputError("simd: expected a path this build and CPU support, found " +
                      std::string(simd_path_name(path)));

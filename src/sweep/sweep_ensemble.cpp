@@ -78,8 +78,11 @@ std::optional<RunKey> run_key(const SweepFile& s, const io::Scenario& sc) {
   if (sc.model.kind() != FieldKind::quadratic || !is_finite(sc.initial)) return std::nullopt;
   const MethodSettings method = io::resolve_method(sc, s.integrate);
   if (method_info(method.name).kind != MethodKind::splitting) return std::nullopt;
-  return RunKey{method, method.ordering.value_or(default_ordering(composition_table(method.name))),
-                sc.integrate.t0, io::resolve_t_end(sc, s.integrate),
+  const SplitOrdering ordering =
+      method.ordering.value_or(default_ordering(composition_table(method.name)));
+  // The ensemble tangent kernels have the axes split only: other splits run point by point.
+  if (tangent_sweep(s) && ordering.free_body != FreeBodySplit::axes) return std::nullopt;
+  return RunKey{method, ordering, sc.integrate.t0, io::resolve_t_end(sc, s.integrate),
                 sc.integrate.max_steps.value_or(IntegrateOptions{}.max_steps)};
 }
 

@@ -41,6 +41,27 @@ TEST(ChaosCli, JsonContract) {
   EXPECT_EQ(js["spectrum"].size(), 6u);
   EXPECT_EQ(js["method"], "rk4");
   EXPECT_EQ(js["spectrum"][0], js["lyapunov_max"]);
+  EXPECT_FALSE(js.contains("split"));  // not a splitting method
+}
+
+// --split spin runs the spin split's own tangent map (the JSON says which split): the same
+// exponent as the axes split within 1% at T = 50 (another map of the same flow); --split exact
+// has no tangent map: one line naming split, exit 2.
+TEST(ChaosCli, SpinSplitHasATangentMap) {
+  const CliResult axes = run("chaos " + brun() + " --t-end 50 --json");
+  const CliResult spin = run("chaos " + brun() + " --t-end 50 --split spin --json");
+  ASSERT_EQ(axes.code, 0) << axes.err;
+  ASSERT_EQ(spin.code, 0) << spin.err;
+  const auto ja = nlohmann::json::parse(axes.out), js = nlohmann::json::parse(spin.out);
+  EXPECT_EQ(ja["split"], "axes");
+  EXPECT_EQ(js["split"], "spin");
+  const double la = ja["lyapunov_max"], ls = js["lyapunov_max"];
+  EXPECT_NEAR(ls, la, 0.01 * la);
+  EXPECT_NE(ls, la);  // a different map reached the run
+  const CliResult exact = run("chaos " + brun() + " --t-end 5 --split exact");
+  EXPECT_EQ(exact.code, 2);
+  EXPECT_NE(exact.err.find("split"), std::string::npos) << exact.err;
+  EXPECT_EQ(std::count(exact.err.begin(), exact.err.end(), '\n'), 1) << exact.err;
 }
 
 // The adaptive pairs integrate the variational equations: "step" is null and "tol" given.

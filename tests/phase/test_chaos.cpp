@@ -98,6 +98,14 @@ TEST(Chaos, GenericHeavyBodyIsChaotic) {
   EXPECT_NEAR(a.lyapunov_max, two, 0.01 * a.lyapunov_max);
   EXPECT_NEAR(a.megno, a.lyapunov_max * T / 2, 0.3 * a.lyapunov_max * T / 2);
   EXPECT_GE(a.fli, a.lyapunov_max * T * (1 - 1e-12));  // the max of ln|δ| includes its last value
+  // The spin split of the free body (its own tangent map: the spin's derivative by the left
+  // Jacobian of SO(3)) gives the same exponent and MEGNO (another map of the same flow).
+  MethodSettings spin = fixed("splitting6", 0.02);
+  spin.ordering = default_ordering(composition_table("splitting6"));
+  spin.ordering->free_body = FreeBodySplit::spin;
+  const phase::ChaosSample sp = indicators(model, x0, T, spin);
+  EXPECT_NEAR(sp.lyapunov_max, a.lyapunov_max, 0.01 * a.lyapunov_max);
+  EXPECT_NEAR(sp.megno, a.megno, 0.01 * a.megno);
   // The variational equations of RK4 and of the adaptive pairs give the same exponent (second
   // methods).
   const phase::ChaosSample r = indicators(model, x0, T, fixed("rk4", 0.01));

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <string>
 
 #include "newtop/model/model.hpp"
 #include "newtop/phase/chaos_run.hpp"
@@ -69,6 +70,28 @@ void check_sub_flows(const BasicModel<F>& model, const char* name) {
     });
     EXPECT_LE((T - D).cwiseAbs().maxCoeff(), kFdTolerance) << name << " axis " << a;
   }
+  // The spin (φ = τ|m| ≈ 0.2 and 1.9: the series and the closed form of f₃) and a rotation by
+  // θ = ta m_a + tb (the spin split's), each against differences of its own map.
+  for (double tau : {0.12, 1.2}) {
+    const auto T =
+        tangent_of(kX, [&](State& y, Tangent& V) { phase::spin_flow_tangent(tau, y, V); });
+    const auto D = central_differences(kX, [&](State y) {
+      Tangent W(6, 0);
+      phase::spin_flow_tangent(tau, y, W);
+      return y;
+    });
+    EXPECT_LE((T - D).cwiseAbs().maxCoeff(), kFdTolerance) << name << " spin " << tau;
+  }
+  for (int a = 0; a < 3; ++a) {
+    const auto T = tangent_of(
+        kX, [&](State& y, Tangent& V) { phase::axis_flow_tangent(a, 0.4, -0.05, y, V); });
+    const auto D = central_differences(kX, [&](State y) {
+      Tangent W(6, 0);
+      phase::axis_flow_tangent(a, 0.4, -0.05, y, W);
+      return y;
+    });
+    EXPECT_LE((T - D).cwiseAbs().maxCoeff(), kFdTolerance) << name << " rotation " << a;
+  }
   const auto T =
       tangent_of(kX, [&](State& y, Tangent& V) { phase::kick_tangent(model, 0.3, y, V); });
   const auto D = central_differences(kX, [&](State y) {
@@ -81,10 +104,16 @@ void check_sub_flows(const BasicModel<F>& model, const char* name) {
 
 template <Field F>
 void check_steps(const BasicModel<F>& model, const char* name) {
-  for (const char* method : {"splitting2", "splitting4", "splitting6", "splitting8", "rk4"}) {
+  for (const char* method : {"splitting2", "splitting4", "splitting6", "splitting8", "rk4",
+                             "splitting4 spin", "splitting6 spin"}) {
+    const std::string text = method;
     MethodSettings m;
-    m.name = method;
+    m.name = text.substr(0, text.find(' '));
     m.step = 0.1;
+    if (text.ends_with(" spin")) {
+      m.ordering = default_ordering(composition_table(m.name));
+      m.ordering->free_body = FreeBodySplit::spin;
+    }
     phase::with_tangent_stepper(m, [&](auto& s) {
       if constexpr (phase::TangentFixedStepper<std::decay_t<decltype(s)>, BasicModel<F>>) {
         const auto T = tangent_of(kX, [&](State& y, Tangent& V) { s.step(model, y, V, 0.1); });
@@ -109,6 +138,9 @@ TEST(TangentMap, SubFlowsMatchFiniteDifferences) {
 TEST(TangentMap, WholeStepsMatchFiniteDifferences) {
   const Models ms;
   check_steps(ms.quadratic, "quadratic");
+  // The spin split above has a gyrostat on C, the axis of largest moment (SpinFlow<true>); here
+  // none.
+  check_steps(test::generic_model(Vec3(0.1, -0.2, 0.0)), "quadratic, no gyrostat on C");
   check_steps(std::get<BasicModel<ExactField>>(ms.exact.variant()), "exact");
   check_steps(std::get<BasicModel<MultipoleField>>(ms.multipole.variant()), "multipole");
 }
@@ -118,10 +150,15 @@ TEST(TangentMap, WholeStepsMatchFiniteDifferences) {
 // formulas in another frame).
 TEST(TangentMap, StateIsThePlainSteppersState) {
   const QuadraticModel model = test::generic_model(Vec3(0.1, -0.2, 0.3));
-  for (const char* method : {"splitting4", "splitting6", "rk4"}) {
+  for (const char* method : {"splitting4", "splitting6", "rk4", "splitting4 spin"}) {
+    const std::string text = method;
     MethodSettings m;
-    m.name = method;
+    m.name = text.substr(0, text.find(' '));
     m.step = 0.05;
+    if (text.ends_with(" spin")) {
+      m.ordering = default_ordering(composition_table(m.name));
+      m.ordering->free_body = FreeBodySplit::spin;
+    }
     State a = kX, b = kX;
     Tangent V = phase::initial_tangent(1);
     with_stepper(m, [&](auto& s) {
@@ -135,12 +172,12 @@ TEST(TangentMap, StateIsThePlainSteppersState) {
     });
     EXPECT_LE(test::distance(a, b), 1e3 * kEps) << method;
   }
-  MethodSettings spin;
-  spin.name = "splitting4";
-  spin.step = 0.05;
-  spin.ordering = default_ordering(composition_table("splitting4"));
-  spin.ordering->free_body = FreeBodySplit::spin;
-  EXPECT_THROW(phase::with_tangent_stepper(spin, [](auto&) {}), InputError);
+  MethodSettings exact;
+  exact.name = "splitting4";
+  exact.step = 0.05;
+  exact.ordering = default_ordering(composition_table("splitting4"));
+  exact.ordering->free_body = FreeBodySplit::exact;
+  EXPECT_THROW(phase::with_tangent_stepper(exact, [](auto&) {}), InputError);
 }
 
 }  // namespace

@@ -309,3 +309,5 @@ class Dop853Stepper {
 };
 
 }  // namespace newtop
+
+#undef NEWTOP_DOP853_SCALAR

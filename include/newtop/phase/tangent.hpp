@@ -6,7 +6,10 @@
 ///
 /// - Splitting methods: the exact derivative of each sub-flow of the composition (splitting.hpp).
 ///   A rotation about the body axis e_a by φ = t (m_a − k_a)/I_a, x' = R_a(φ) x for x = m and
-///   x = γ, has δx' = R_a(φ) δx + (x' × e_a) (t/I_a) δm_a (dR/dφ x = x' × e_a). The kick
+///   x = γ, has δx' = R_a(φ) δx + (x' × e_a) (t/I_a) δm_a (dR/dφ x = x' × e_a). The spin of the
+///   spin split, γ' = R(u) γ with the rotation vector u = −τ m (m fixed), has δm' = δm and
+///   δγ' = R(u) δγ + τ γ' × (J(u) δm), J(u) = 1 + f₂ [u]× + f₃ [u]×² the left Jacobian of SO(3)
+///   (f₂ = (1 − cos φ)/φ², f₃ = (φ − sin φ)/φ³, φ = |u|). The kick
 ///   m' = m + t L(γ) has δm' = δm + t (∂L/∂γ) δγ, δγ' = δγ, with ∂L/∂γ = [γ]× ∂²V/∂γ² − [∂V/∂γ]×
 ///   from each field's Hessian (moment_jacobian).
 /// - Runge–Kutta methods: the variational equations δẋ = Df(x) δx integrated with the state by the
@@ -51,6 +54,14 @@ Eigen::Matrix<double, 6, 6> rhs_jacobian(const BasicModel<F>& model, const State
 /// The rotation sub-flow about body axis a over time t, with its derivative applied to V.
 void axis_flow_tangent(const Body& body, int a, double t, State& x, Tangent& V);
 
+/// The rotation about body axis a by θ = ta m_a + tb (the flow of ½α m_a² + β m_a over t, with
+/// ta = t α, tb = t β), with its derivative applied to V (dθ/dm_a = ta).
+void axis_flow_tangent(int a, double ta, double tb, State& x, Tangent& V);
+
+/// The spin over τ (the flow of ½|m|²/I over t = τ I: γ turns about m by −τ|m|, m fixed), with
+/// its derivative applied to V.
+void spin_flow_tangent(double tau, State& x, Tangent& V);
+
 /// The kick sub-flow over t, with its derivative applied to V.
 template <Field F>
 void kick_tangent(const BasicModel<F>& model, double t, State& x, Tangent& V) {
@@ -66,9 +77,8 @@ void kick_tangent(const BasicModel<F>& model, double t, State& x, Tangent& V) {
 }
 
 /// A splitting method with its tangent map: the composition of SplittingStepper (the same
-/// coefficients and working axes), in the body frame. Only the split of the free body into axis
-/// rotations (FreeBodySplit::axes, the default of every composition table); the spin and exact
-/// splits are refused (InputError).
+/// coefficients, working axes and sub-flows), in the body frame. The axes split (the default of
+/// every composition table) and the spin split; the exact split is refused (InputError).
 class TangentSplittingStepper {
  public:
   TangentSplittingStepper(const CompositionTable& table, const SplitOrdering& ordering);
@@ -77,9 +87,10 @@ class TangentSplittingStepper {
   int order() const { return order_; }
   template <Field F>
   void step(const BasicModel<F>& model, State& x, Tangent& V, double h) {
-    if (model.body.inertia() != inertia_key_) {
-      axes_ = split_frame(model.body, ordering_).axis;
+    if (model.body.inertia() != inertia_key_ || model.body.gyrostat() != gyrostat_key_) {
+      frame_ = split_frame(model.body, ordering_);
       inertia_key_ = model.body.inertia();
+      gyrostat_key_ = model.body.gyrostat();
     }
     const std::size_t s = c_.a.size();
     for (std::size_t i = 0; i < s; ++i) {
@@ -88,15 +99,18 @@ class TangentSplittingStepper {
     }
     if (c_.b[s] != 0.0) kick_tangent(model, c_.b[s] * h, x, V);
   }
-  /// T(t) = R_i(t/2) R_j(t/2) R_k(t) R_j(t/2) R_i(t/2), (i, j, k) the split's axes.
+  /// The axes split: T(t) = R_i(t/2) R_j(t/2) R_k(t) R_j(t/2) R_i(t/2), (i, j, k) the split's
+  /// axes. The spin split: the spin over t/I_k, then the rotations of ½ m_w² (1/I_w − 1/I_k) −
+  /// m_w k_w/I_w about i (t/2), j (t, or t/2, k's gyrostat term over t, t/2 when k_k ≠ 0), i (t/2)
+  /// — SpinFlow's order.
   void free_body(const Body& body, double t, State& x, Tangent& V) const;
 
  private:
   int order_;
   SplitOrdering ordering_;
   SplittingCoefficients c_;
-  Vec3 inertia_key_ = Vec3::Constant(NAN);
-  std::array<int, 3> axes_{0, 1, 2};
+  Vec3 inertia_key_ = Vec3::Constant(NAN), gyrostat_key_ = Vec3::Constant(NAN);
+  SplitFrame frame_;
 };
 
 /// Classical RK4 on the state and the variational equations together. One vector (the Lyapunov

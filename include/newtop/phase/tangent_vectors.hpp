@@ -13,11 +13,15 @@ namespace newtop::phase {
 using Tangent = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6>;
 
 /// Throws InputError unless the settings name a method with a tangent map (validate()'s checks
-/// too): a splitting method needs the axes split of the free body.
+/// too): a splitting method needs the axes or the spin split of the free body.
 void check_tangent_method(const MethodSettings& settings);
 
-/// Throws InputError naming `split` unless the free body is split into axis rotations (the split
-/// the tangent map is written for).
+/// Throws InputError naming `split` unless the free body is split into axis rotations or a spin
+/// and rotations (the splits the tangent map is written for; not the exact flow).
 void check_tangent_split(FreeBodySplit split);
+
+/// Throws InputError naming `split` unless it is the axes split (the one the ensemble tangent
+/// stepper's kernels are written for).
+void check_ensemble_tangent_split(FreeBodySplit split);
 
 }  // namespace newtop::phase
