@@ -197,7 +197,8 @@ TEST(SweepEnsemble, MegnoOverModelParametersInOneRun) {
 // A MEGNO map with the spin split of the free body: the ensemble tangent kernels have the axes
 // split only, so every point runs alone through the scalar tangent map of the spin split (none in
 // the ensemble, every point ok and evaluate_point's bits), and its values are those of the axes
-// split within 1e-6 (another map of the same flow over a short run).
+// split within 1e-6 (another map of the same flow over a short run). Six points: enough for a
+// group of lanes, had the split been let through.
 TEST(SweepEnsemble, MegnoWithTheSpinSplitRunsPointByPoint) {
   std::ifstream in(std::string(NEWTOP_SOURCE_DIR) + "/examples/section_chaotic.toml");
   std::stringstream text;
