@@ -1,10 +1,10 @@
 #pragma once
 /// \file
 /// The variational equations with the embedded Runge–Kutta pairs (dopri5, rkf78, dop853): the state
-/// and the tangent vectors integrated together as one system of 6 + 36 equations, with odeint's
-/// error control over all of them (the indicators renormalise the vectors to norm 1 after every
-/// accepted step, so that the tolerance applies to O(1) numbers; the step sequence therefore
-/// differs from `simulate`'s, which controls the state alone).
+/// and the tangent vectors integrated together as one system of 6 + 36 equations, with the pair's
+/// error control (odeint's, or Dop853Core's) over all of them (the indicators renormalise the
+/// vectors to norm 1 after every accepted step, so that the tolerance applies to O(1) numbers; the
+/// step sequence therefore differs from `simulate`'s, which controls the state alone).
 
 #include <array>
 
