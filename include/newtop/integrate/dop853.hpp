@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <tuple>
+#include <type_traits>
 
 #include "newtop/integrate/dop853_tableau.hpp"
 #include "newtop/integrate/runge_kutta.hpp"
@@ -240,72 +241,63 @@ class Dop853Core {
   std::int64_t step_id_ = 0, dense_id_ = -1;
 };
 
+/// Dop853Core on the Euler–Poisson equations of one state type (Y = OdeState for State,
+/// OrientedOdeState for OrientedState), in AdaptivePair's interface; with an attitude q is
+/// renormalised after each accepted step and in the continuous extension.
+template <class Y>
+class Dop853OnModel {
+  static constexpr bool kWithAttitude = std::is_same_v<Y, OrientedOdeState>;
+  using X = std::conditional_t<kWithAttitude, OrientedState, State>;
+
+ public:
+  Dop853OnModel(double abs_tol, double rel_tol) : core_(abs_tol, rel_tol) {}
+
+  template <Field F>
+  double initial_step(const BasicModel<F>& model, const X& x, double t0, double t1) {
+    return core_.initial_step(OdeSystem<F, Y>{&model}, to_ode(x), t0, t1 - t0);
+  }
+
+  template <Field F>
+  bool try_step(const BasicModel<F>& model, X& x, double& t, double& dt) {
+    Y y = to_ode(x);
+    if (!core_.try_step(OdeSystem<F, Y>{&model}, y, t, dt)) return false;
+    if constexpr (kWithAttitude) {
+      // q̇ is linear in q: f at the renormalised point is the same rescaling.
+      projection_ = std::max(projection_, renormalise(core_.point(), &core_.derivative()));
+    }
+    x = from_ode(core_.point());
+    return true;
+  }
+
+  template <Field F>
+  X dense_state(const BasicModel<F>& model, double t) {
+    Y y = core_.dense(OdeSystem<F, Y>{&model}, t);
+    if constexpr (kWithAttitude) renormalise(y);
+    return from_ode(y);
+  }
+
+  double attitude_projection() const { return projection_; }
+
+ private:
+  Dop853Core<Y> core_;
+  double projection_ = 0.0;
+};
+
 }  // namespace detail
 
 /// Dormand–Prince 8(5,3) (detail::Dop853Core) on the Euler–Poisson equations: the AdaptiveStepper
 /// and DenseStepper of order 8. A state with an attitude runs the pair on the ten numbers
 /// (m, γ, q), q renormalised after each accepted step (the continuous extension is the method's,
 /// of the unprojected end point, renormalised).
-class Dop853Stepper {
+class Dop853Stepper : public detail::AdaptivePair<detail::Dop853OnModel<OdeState>,
+                                                  detail::Dop853OnModel<OrientedOdeState>,
+                                                  detail::Dop853Core<OdeState>::kOrder> {
+  using Base =
+      detail::AdaptivePair<detail::Dop853OnModel<OdeState>, detail::Dop853OnModel<OrientedOdeState>,
+                           detail::Dop853Core<OdeState>::kOrder>;
+
  public:
-  Dop853Stepper(double abs_tol, double rel_tol)
-      : abs_tol_(abs_tol),
-        rel_tol_(rel_tol),
-        plain_(abs_tol, rel_tol),
-        oriented_(abs_tol, rel_tol) {}
-
-  int order() const { return detail::Dop853Core<OdeState>::kOrder; }
-  double abs_tol() const { return abs_tol_; }
-  double rel_tol() const { return rel_tol_; }
-
-  template <Field F, PhaseState X>
-  double initial_step(const BasicModel<F>& model, const X& x, double t0, double t1) {
-    return core<X>().initial_step(OdeSystem<F, OdeStateOf<X>>{&model}, to_ode(x), t0, t1 - t0);
-  }
-
-  template <Field F, PhaseState X>
-  bool try_step(const BasicModel<F>& model, X& x, double& t, double& dt) {
-    auto& c = core<X>();
-    OdeStateOf<X> y = to_ode(x);
-    if (!c.try_step(OdeSystem<F, OdeStateOf<X>>{&model}, y, t, dt)) return false;
-    if constexpr (kOriented<X>) {
-      // q̇ is linear in q: f at the renormalised point is the same rescaling.
-      projection_ = std::max(projection_, detail::renormalise(c.point(), &c.derivative()));
-    }
-    x = from_ode(c.point());
-    return true;
-  }
-
-  /// The continuous extension of the last accepted step at t (between its ends).
-  template <Field F>
-  State dense_state(const BasicModel<F>& model, double t) {
-    return from_ode(plain_.dense(OdeSystem<F>{&model}, t));
-  }
-  /// The same for a run with an attitude (q renormalised).
-  template <Field F>
-  OrientedState dense_oriented_state(const BasicModel<F>& model, double t) {
-    OrientedOdeState y = oriented_.dense(OdeSystem<F, OrientedOdeState>{&model}, t);
-    detail::renormalise(y);
-    return from_ode(y);
-  }
-
-  /// The largest renormalisation |‖q‖ − 1| of the attitude in one step so far.
-  double attitude_projection() const { return projection_; }
-
- private:
-  template <class X>
-  auto& core() {
-    if constexpr (kOriented<X>) {
-      return oriented_;
-    } else {
-      return plain_;
-    }
-  }
-
-  double abs_tol_, rel_tol_;
-  detail::Dop853Core<OdeState> plain_;
-  detail::Dop853Core<OrientedOdeState> oriented_;
-  double projection_ = 0.0;
+  using Base::Base;
 };
 
 }  // namespace newtop

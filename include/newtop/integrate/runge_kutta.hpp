@@ -355,26 +355,13 @@ class EmbeddedRkCore {
   double projection_ = 0.0;
 };
 
-}  // namespace detail
-
-/// An embedded Runge–Kutta pair with odeint's standard error control:
-/// err_i / (abs_tol + rel_tol (|y_i| + h |y'_i|)) ≤ 1 in the max norm. A non-finite trial is
-/// rejected (odeint's controller would accept an error estimate of NaN) and retried
-/// kNonFiniteShrink times shorter. After an accepted step, dense_state(model, t) is the method's
-/// continuous extension inside it: Dormand–Prince's own (order 4, odeint's calc_state); for
-/// Fehlberg 7(8), which has none, the Hermite interpolant of degree 7 (HermiteInterpolant) on the
-/// nodes θ = 0, 1/3, 2/3, 1 of the step, the inner values from steps of θh of the same formula from
-/// the step's start (built on first use: 26 more evaluations of f per interpolated step; error
-/// O(h^8), the order of the pair's error estimate). A state with an attitude runs the same pair on
-/// the ten numbers (dense_oriented_state for its continuous extension).
-template <class ErrorStepper, int Order>
-class EmbeddedRkStepper {
-  using Plain = detail::EmbeddedRkCore<ErrorStepper, Order>;
-  using Oriented =
-      detail::EmbeddedRkCore<detail::RebindStateT<ErrorStepper, OrientedOdeState>, Order>;
-
+/// An adaptive method on both state types, the AdaptiveStepper and DenseStepper that newtop's
+/// drivers run: Plain on State, Oriented on OrientedState, each with initial_step(model, x, t0,
+/// t1), try_step(model, x, t, dt), dense_state(model, t) and attitude_projection().
+template <class Plain, class Oriented, int Order>
+class AdaptivePair {
  public:
-  EmbeddedRkStepper(double abs_tol, double rel_tol)
+  AdaptivePair(double abs_tol, double rel_tol)
       : abs_tol_(abs_tol),
         rel_tol_(rel_tol),
         plain_(abs_tol, rel_tol),
@@ -421,6 +408,32 @@ class EmbeddedRkStepper {
   double abs_tol_, rel_tol_;
   Plain plain_;
   Oriented oriented_;
+};
+
+}  // namespace detail
+
+/// An embedded Runge–Kutta pair with odeint's standard error control:
+/// err_i / (abs_tol + rel_tol (|y_i| + h |y'_i|)) ≤ 1 in the max norm. A non-finite trial is
+/// rejected (odeint's controller would accept an error estimate of NaN) and retried
+/// kNonFiniteShrink times shorter. After an accepted step, dense_state(model, t) is the method's
+/// continuous extension inside it: Dormand–Prince's own (order 4, odeint's calc_state); for
+/// Fehlberg 7(8), which has none, the Hermite interpolant of degree 7 (HermiteInterpolant) on the
+/// nodes θ = 0, 1/3, 2/3, 1 of the step, the inner values from steps of θh of the same formula from
+/// the step's start (built on first use: 26 more evaluations of f per interpolated step; error
+/// O(h^8), the order of the pair's error estimate). A state with an attitude runs the same pair on
+/// the ten numbers (dense_oriented_state for its continuous extension).
+template <class ErrorStepper, int Order>
+class EmbeddedRkStepper
+    : public detail::AdaptivePair<
+          detail::EmbeddedRkCore<ErrorStepper, Order>,
+          detail::EmbeddedRkCore<detail::RebindStateT<ErrorStepper, OrientedOdeState>, Order>,
+          Order> {
+  using Base = detail::AdaptivePair<
+      detail::EmbeddedRkCore<ErrorStepper, Order>,
+      detail::EmbeddedRkCore<detail::RebindStateT<ErrorStepper, OrientedOdeState>, Order>, Order>;
+
+ public:
+  using Base::Base;
 };
 
 /// Dormand–Prince 5(4) (odeint's runge_kutta_dopri5), order 5.
