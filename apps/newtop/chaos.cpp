@@ -51,6 +51,7 @@ int run(const ChaosArgs& a) {
   }
   // Fixed-step methods: at most kHistoryRows rows; adaptive ones: every accepted step.
   const bool adaptive = method_info(run.method.name).kind == MethodKind::adaptive;
+  const std::optional<std::string> split = split_of(run.method);
   const std::int64_t steps = adaptive ? 1 : fixed_step_count(run.t0, run.t_end, run.method.step);
   const std::int64_t every = std::max<std::int64_t>(1, (steps + kHistoryRows - 1) / kHistoryRows);
   std::function<void(const phase::ChaosSample&)> history;
@@ -79,8 +80,7 @@ int run(const ChaosArgs& a) {
     j["method"] = run.method.name;
     j["step"] = adaptive ? io::Json(nullptr) : io::Json(run.method.step);
     if (adaptive) j["tol"] = run.method.abs_tol;
-    const bool splitting = method_info(run.method.name).kind == MethodKind::splitting;
-    if (splitting) j["split"] = std::string(to_string(free_body_split(run.method)));
+    if (split) j["split"] = *split;
     j["outcome"] = to_string(r.outcome.status);
     print_json(std::cout, j);
   } else {
@@ -95,10 +95,8 @@ int run(const ChaosArgs& a) {
     std::cout << "t = " << format_number(r.outcome.t) << ", method " << run.method.name
               << (adaptive ? ", tol " : ", step ")
               << format_number(adaptive ? run.method.abs_tol : run.method.step)
-              << (method_info(run.method.name).kind == MethodKind::splitting
-                      ? " (" + std::string(to_string(free_body_split(run.method))) + " split)"
-                      : std::string())
-              << ", outcome " << to_string(r.outcome.status) << '\n';
+              << (split ? " (" + *split + " split)" : std::string()) << ", outcome "
+              << to_string(r.outcome.status) << '\n';
     if (a.out) std::cout << "history written to " << *a.out << '\n';
   }
   return r.outcome.status == Status::finished ? kExitOk : kExitIncomplete;

@@ -60,4 +60,9 @@ io::Scenario load_body_scenario(const std::string& path) {
   return io::load_scenario(path);
 }
 
+std::optional<std::string> split_of(const MethodSettings& method) {
+  if (method_info(method.name).kind != MethodKind::splitting) return std::nullopt;
+  return std::string(to_string(free_body_split(method)));
+}
+
 }  // namespace newtop::app

@@ -26,6 +26,9 @@ inline void add_integration_options(CLI::App& sub, IntegrationArgs& a) {
   add_integration_options(sub, a.t_end, a.method, a.step, a.tol, a.split);
 }
 
+/// The free-body split a splitting method runs with ("axes", "spin", "exact"); none for the others.
+std::optional<std::string> split_of(const MethodSettings& method);
+
 /// The run from the scenario's t0 to t_end with `method`: non-finite times, a run of no length,
 /// and a fixed-step run of more steps than max_steps are bad input (InputError).
 void check_run_span(const io::Scenario& sc, const MethodSettings& method, double t0, double t_end,

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <iomanip>
 
+#include "integration_options.hpp"
+
 namespace newtop::app {
 namespace {
 
@@ -121,8 +123,7 @@ io::Json simulation_json(const SimulationReport& r) {
   } else {
     j["step"] = r.method.step;
   }
-  if (info.kind == MethodKind::splitting)
-    j["split"] = std::string(to_string(free_body_split(r.method)));
+  if (const auto split = split_of(r.method)) j["split"] = *split;
   j["outcome"] = std::string(to_string(r.outcome.status));
   j["steps"] = r.outcome.steps;
   j["rejected_steps"] = r.outcome.rejected;
@@ -166,9 +167,7 @@ void print_simulation_summary(std::ostream& os, const SimulationReport& r) {
   } else {
     os << "  step = " << fmt(r.method.step);
   }
-  if (method_info(r.method.name).kind == MethodKind::splitting) {
-    os << "  (" << to_string(free_body_split(r.method)) << " split)";
-  }
+  if (const auto split = split_of(r.method)) os << "  (" << *split << " split)";
   os << "\noutcome   " << to_string(o.status) << " at t = " << fmt(o.t) << " after " << o.steps
      << " steps";
   if (o.rejected) os << " (" << o.rejected << " rejected)";
