@@ -8,14 +8,14 @@ state in the angles of f = 0) (docs/integrable.md, "Brun's case, level f != 0").
 
 Run by ctest with NEWTOP_PYTHON_MODULE (build/python) set (tests/python/CMakeLists.txt)."""
 
-import importlib.util
 import os
 import sys
 
 import numpy as np
 import pytest
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+from scripts_dir import load_script
+
 sys.path.insert(0, os.environ["NEWTOP_PYTHON_MODULE"])
 
 #: The peaks are located to 1e-8 .. 1e-11 (C-infinity window over T = 1500, measured by the script
@@ -30,18 +30,9 @@ PEAK_TOLERANCE = 1e-6
 COEFFICIENTS = range(-16, 17)
 
 
-def load_script():
-    path = os.path.join(ROOT, "scripts", "brun_prym.py")
-    spec = importlib.util.spec_from_file_location("brun_prym", path)
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = mod
-    spec.loader.exec_module(mod)
-    return mod
-
-
 @pytest.mark.parametrize("lam, f", [(-0.8, 0.3), (0.8, 0.6)])
 def test_prym_frequencies_are_the_frequencies_of_the_motion(lam, f):
-    mod = load_script()
+    mod = load_script("brun_prym")
     mod.LAMBDA = lam
     level = mod.Level(f)
     u, w = mod.torus_lattice(mod.lattice_basis(mod.periods(level)))

@@ -5,22 +5,12 @@ not from pixels)."""
 
 from __future__ import annotations
 
-import importlib.util
 import os
-import sys
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+from scripts_dir import ROOT, load_script
+
 #: A PNG of a drawn figure is tens of kilobytes; an empty canvas compresses below this.
 MIN_IMAGE_BYTES = 10_000
-
-
-def load_script():
-    path = os.path.join(ROOT, "scripts", "work_precision_plot.py")
-    spec = importlib.util.spec_from_file_location("work_precision_plot", path)
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = mod
-    spec.loader.exec_module(mod)
-    return mod
 
 
 def test_runs_are_drawn_where_and_in_the_order_they_belong(tmp_path):
@@ -32,7 +22,7 @@ def test_runs_are_drawn_where_and_in_the_order_they_belong(tmp_path):
         'a,state,"splitting2 (axes)",0.04,1000,inf,5.0e-4\n'
         'a,state,"odeint rkf78 (peer)",1e-9,100,2.0e-7,3.0e-4\n'
         'c,energy,"splitting6 (spin)",0.1,100000,3.0e-10,5.0e-2\n')
-    wp = load_script()
+    wp = load_script("work_precision_plot")
     out = tmp_path / "wp.png"
     fig = wp.plot(wp.read(str(csv)), str(out))
     assert os.path.getsize(out) > MIN_IMAGE_BYTES
@@ -54,7 +44,7 @@ def test_runs_are_drawn_where_and_in_the_order_they_belong(tmp_path):
 
 
 def test_the_documented_data_plots_every_regime(tmp_path):
-    wp = load_script()
+    wp = load_script("work_precision_plot")
     data = wp.read(os.path.join(ROOT, "docs", "data", "work_precision.csv"))
     fig = wp.plot(data, str(tmp_path / "wp.png"))
     titles = {ax.get_title() for ax in fig.axes}
