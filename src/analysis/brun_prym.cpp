@@ -1,6 +1,7 @@
 #include "newtop/analysis/brun_prym.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <boost/math/quadrature/gauss.hpp>
 #include <cmath>
@@ -21,6 +22,9 @@ constexpr int kPolishSteps = 3;
 constexpr int kNodes = 12;
 // Bisection levels of brun_prym_abel_increment at most (an interval of 2⁻⁸ of the first).
 constexpr int kMaxLevels = 8;
+// A candidate whose eigenvalues agree with the ξ_j to this fraction of their size carries the
+// divisor (the other candidates differ at O(1)).
+constexpr double kMatch = 1e-8;
 // Relative round-off of a rate term (a polished root, the line, square roots): a few ε.
 constexpr double kRoundOff = 4 * std::numeric_limits<double>::epsilon();
 
@@ -136,6 +140,25 @@ Piece refine(const BrunCurve& k, const BrunMotion& x, double a, double b, const 
   return {{left.sum[0] + right.sum[0], left.sum[1] + right.sum[1]}, left.noise + right.noise};
 }
 
+/// ξ with X(u) × α(u) = iξ α(u) at a zero (u, v) of α·X, for a working-frame state x: X and α on
+/// the lift (w1, w2, w3) of (u, v), ξ read off the largest component of α.
+Complex eigenvalue(const BrunCurve& k, const std::array<Complex, 3>& c, const State& x, Complex u,
+                   Complex v) {
+  const Complex sl = std::sqrt(Complex(k.lambda_));
+  std::array<Complex, 3> w{};
+  for (int i = 0; i < 3; ++i) w[i] = std::sqrt(u - k.e[i]);
+  if (std::abs(w[0] * w[1] * w[2] - v) > std::abs(w[0] * w[1] * w[2] + v)) w[0] = -w[0];
+  std::array<Complex, 3> X{}, alpha{};
+  for (int i = 0; i < 3; ++i) {
+    X[i] = w[i] * x.m[i] + sl * w[(i + 1) % 3] * w[(i + 2) % 3] * x.gamma[i];
+    alpha[i] = c[i] * w[i];
+  }
+  int big = 0;
+  for (int i = 1; i < 3; ++i) big = std::abs(alpha[i]) > std::abs(alpha[big]) ? i : big;
+  const int i1 = (big + 1) % 3, i2 = (big + 2) % 3;
+  return (X[i1] * alpha[i2] - X[i2] * alpha[i1]) / (Complex(0.0, 1.0) * alpha[big]);
+}
+
 }  // namespace
 
 BrunPrymDivisor brun_prym_divisor(const BrunCurve& k, const State& s) {
@@ -168,20 +191,7 @@ BrunPrymDivisor brun_prym_divisor(const BrunCurve& k, const State& s) {
       u -= f / df;
     }
     const Complex v = -(l.A * u + l.B) / (sl * l.C);
-    std::array<Complex, 3> w{};
-    for (int i = 0; i < 3; ++i) w[i] = std::sqrt(u - k.e[i]);
-    if (std::abs(w[0] * w[1] * w[2] - v) > std::abs(w[0] * w[1] * w[2] + v)) w[0] = -w[0];
-    std::array<Complex, 3> X{}, alpha{};
-    for (int i = 0; i < 3; ++i) {
-      X[i] = w[i] * x.m[i] + sl * w[(i + 1) % 3] * w[(i + 2) % 3] * x.gamma[i];
-      alpha[i] = c[i] * w[i];
-    }
-    // X × α = iξ α: read ξ off the largest component of α.
-    int big = 0;
-    for (int i = 1; i < 3; ++i) big = std::abs(alpha[i]) > std::abs(alpha[big]) ? i : big;
-    const int i1 = (big + 1) % 3, i2 = (big + 2) % 3;
-    const Complex cross = X[i1] * alpha[i2] - X[i2] * alpha[i1];
-    const Complex xi_sign = cross / (Complex(0.0, 1.0) * alpha[big]);
+    const Complex xi_sign = eigenvalue(k, c, x, u, v);
     // The value from ξ² = N(u) + 2√λ f v (u and v are accurate; the w_i are not near u = e_i),
     // the sign from the eigenvector.
     const Complex N = (k.lambda_ * u + (k.c - k.lambda_ * S1)) * u + 2 * k.kappa * k.h;
@@ -194,6 +204,80 @@ BrunPrymDivisor brun_prym_divisor(const BrunCurve& k, const State& s) {
 
 BrunPrymLine brun_prym_line(const BrunCurve& k, const State& s) {
   return line_of(k, isotropic(k), to_working_frame(k, s));
+}
+
+State brun_prym_state(const BrunCurve& k, const BrunPrymDivisor& d) {
+  const auto c = isotropic(k);
+  const Complex sl = std::sqrt(Complex(k.lambda_));
+  // (A : B : C): the line A u + B + √λ C v = 0 through the three points.
+  Eigen::Matrix3cd rows;
+  for (int j = 0; j < 3; ++j) rows.row(j) << d[j].u, 1.0, sl * d[j].v;
+  const Eigen::Vector3cd line =
+      Eigen::JacobiSVD<Eigen::Matrix3cd>(rows, Eigen::ComputeFullV).matrixV().col(2);
+  // Real unknowns (m, γ, Re μ, Im μ) with Σc_i m_i = μA, −Σc_i e_i m_i = μB, Σc_i γ_i = μC:
+  // six real homogeneous equations, a plane of solutions.
+  Eigen::Matrix<double, 6, 8> L = Eigen::Matrix<double, 6, 8>::Zero();
+  for (int i = 0; i < 3; ++i) {
+    const std::array<Complex, 3> coef{c[i], -c[i] * k.e[i], c[i]};
+    for (int row = 0; row < 3; ++row) {
+      const int col = row < 2 ? i : 3 + i;
+      L(2 * row, col) = coef[row].real();
+      L(2 * row + 1, col) = coef[row].imag();
+    }
+  }
+  for (int row = 0; row < 3; ++row) {  // −μ (line[row]): μ = μr + i μi
+    const Complex w = line[row];
+    L(2 * row, 6) = -w.real(), L(2 * row, 7) = w.imag();
+    L(2 * row + 1, 6) = -w.imag(), L(2 * row + 1, 7) = -w.real();
+  }
+  const Eigen::Matrix<double, 8, 8> V =
+      Eigen::JacobiSVD<Eigen::Matrix<double, 6, 8>>(L, Eigen::ComputeFullV).matrixV();
+  const Eigen::Matrix<double, 8, 1> Y1 = V.col(6), Y2 = V.col(7);
+  // On the plane s Y1 + t Y2: |γ|² and m·γ are quadratic forms; m·γ = f |γ|² fixes s : t.
+  auto form = [](const Eigen::Matrix<double, 8, 1>& a, const Eigen::Matrix<double, 8, 1>& b,
+                 bool gamma_gamma) {
+    return gamma_gamma
+               ? a.segment<3>(3).dot(b.segment<3>(3))
+               : 0.5 * (a.head<3>().dot(b.segment<3>(3)) + b.head<3>().dot(a.segment<3>(3)));
+  };
+  Eigen::Matrix2d G, S;
+  for (int p = 0; p < 2; ++p) {
+    for (int q = 0; q < 2; ++q) {
+      const auto& a = p == 0 ? Y1 : Y2;
+      const auto& b = q == 0 ? Y1 : Y2;
+      G(p, q) = form(a, b, true);
+      S(p, q) = form(a, b, false) - k.f * G(p, q);
+    }
+  }
+  // Directions (s, t) with S(s, t) = 0: the eigenvectors of S give S = diag(σ1, σ2) in a rotated
+  // basis, zero on σ1 x² + σ2 y² = 0.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(S);
+  const double s1 = eig.eigenvalues()[0], s2 = eig.eigenvalues()[1];
+  const double r = std::sqrt(std::max(0.0, -s1 / s2));  // s1 ≤ 0 ≤ s2 on a real solution
+  // The size of the points, for the match below.
+  double size = 0;
+  for (const BrunPrymPoint& p : d) size += std::abs(p.xi);
+  double best = std::numeric_limits<double>::infinity();
+  State state;
+  for (double sign_y : {1.0, -1.0}) {
+    const Eigen::Vector2d dir = eig.eigenvectors().col(0) + sign_y * r * eig.eigenvectors().col(1);
+    const double g2 = dir.dot(G * dir);
+    if (!(g2 > 0)) continue;
+    for (double sign : {1.0, -1.0}) {
+      const Eigen::Matrix<double, 8, 1> z = sign / std::sqrt(g2) * (dir[0] * Y1 + dir[1] * Y2);
+      const State w = from_working_frame(k, State{z.head<3>(), z.segment<3>(3)});
+      // A candidate whose own eigenvalues at the points are the ξ_j (the sign of (m, γ) flips
+      // every ξ; the other direction is a state of another level through the same points).
+      const State x = to_working_frame(k, w);
+      double mismatch = 0;
+      for (const BrunPrymPoint& p : d) mismatch += std::abs(eigenvalue(k, c, x, p.u, p.v) - p.xi);
+      if (mismatch < best) best = mismatch, state = w;
+    }
+  }
+  if (!(best <= kMatch * size)) {
+    throw InputError("Brun divisor: no real state of the level carries these points");
+  }
+  return state;
 }
 
 BrunPrymRate brun_prym_rate(const BrunCurve& k, const State& s, const State& ds) {

@@ -11,9 +11,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <ostream>
 #include <random>
+#include <string>
 
 #include "newtop/analysis/brun_level.hpp"
 #include "newtop/analysis/brun_prym.hpp"
@@ -36,6 +38,9 @@ constexpr double kEigen = 1e-9;
 // round-off (the terms' size, times the growth of a root's error as two points close in and near
 // a root of D). At the 200 points below the errors reach ~200 ε times it: 512 ε.
 constexpr double kRate = 512 * kEps;
+// Divisor → state: the line through three points with errors ~1e-14 (a null vector by SVD), then
+// an 8-unknown real null space and a 2×2 quadratic: 1e-11 relative to |m|.
+constexpr double kRoundTrip = 1e-11;
 constexpr double kReferenceTol = 1e-14;
 // rkf78 at 1e-14 has a global error ~1e-12 over the spans below; inside an interval of 0.5,
 // 32 splitting8 steps (h ≤ 1/64, error ~1e-15); each interval's quadrature is bisected until two
@@ -45,6 +50,12 @@ constexpr double kAbelAgreement = 1e-10;
 constexpr double kQuadrature = 1e-12;
 constexpr double kInterval = 0.5;
 constexpr int kInnerSteps = 32;
+
+std::string sci(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
 
 QuadraticModel model_of(const Vec3& inertia, double lambda) {
   return {Body::from_principal(inertia, 1.0, Vec3::Zero()), QuadraticField::coulomb(0.0, lambda)};
@@ -109,6 +120,22 @@ TEST(BrunPrym, DivisorPointsAreZerosWhereAlphaIsAnEigenvector) {
   }
 }
 
+TEST(BrunPrym, StateFromTheDivisorIsTheIdentity) {
+  std::mt19937_64 rng(9);
+  double worst = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const RandomLevel L = random_level(rng);
+    const BrunCurve k = brun_level(L.model, L.x0);
+    const State back = brun_prym_state(k, brun_prym_divisor(k, L.x0));
+    const double scale = std::max(1.0, L.x0.m.norm());
+    const double err = std::max((back.m - L.x0.m).cwiseAbs().maxCoeff(),
+                                (back.gamma - L.x0.gamma).cwiseAbs().maxCoeff());
+    worst = std::max(worst, err / scale);
+    EXPECT_LT(err, kRoundTrip * scale) << trial;
+  }
+  RecordProperty("worst_round_trip", sci(worst));
+}
+
 TEST(BrunPrym, RatesAlongTheMotionAreMinusTwoIOverKappaAndZero) {
   std::mt19937_64 rng(7);
   double worst = 0, worst_other = 1e300;
@@ -130,7 +157,7 @@ TEST(BrunPrym, RatesAlongTheMotionAreMinusTwoIOverKappaAndZero) {
         worst_other,
         std::max(std::abs(q.rate[0] - Complex(0, -scale)), std::abs(q.rate[1])) / q.error_scale);
   }
-  RecordProperty("worst_relative_rate_error", std::to_string(worst));
+  RecordProperty("worst_relative_rate_error", sci(worst));
   EXPECT_GT(worst_other, 1e6 * kRate);
 }
 
@@ -179,7 +206,7 @@ TEST_P(BrunPrymRegimes, AbelPrymSumsAreLinearAlongTheNumericalMotion) {
     worst = std::max({worst, std::abs(sum[0] - Complex(0, -2 * t1 / k.kappa)), std::abs(sum[1])});
   }
   EXPECT_LT(worst, kAbelAgreement) << r.name;
-  RecordProperty("worst_abel_error", std::to_string(worst));
+  RecordProperty("worst_abel_error", sci(worst));
 }
 
 // The start of examples/analytic_brun.toml moved to f = 0.3 (λ = −0.8: torus periods 2π/ω = 17.1

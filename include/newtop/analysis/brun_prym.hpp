@@ -46,6 +46,15 @@ BrunPrymLine brun_prym_line(const BrunCurve& k, const State& s);
 /// of the Poisson sphere).
 BrunPrymDivisor brun_prym_divisor(const BrunCurve& k, const State& s);
 
+/// The body-frame state on the level of k whose divisor is d (the inverse of brun_prym_divisor):
+/// the line through the points gives (A : B : C); with μA = Σc_i m_i, μB = −Σc_i e_i m_i,
+/// μC = Σc_i γ_i six real linear equations leave a plane of (m, γ, μ), on which m·γ = f and
+/// |γ| = 1 leave four candidates, ±(m, γ) on two directions; the one whose eigenvalues at the
+/// points are the ξ_j is returned (the sign of (m, γ) flips every ξ_j; the other direction is a
+/// state of another level through the same points). Throws InputError when no real state of the
+/// level carries d.
+State brun_prym_state(const BrunCurve& k, const BrunPrymDivisor& d);
+
 /// The rates of the Abel–Prym sums along a tangent vector ds at s (both body frame):
 /// Σ_j (1, u_j) u̇_j/(v_j ξ_j) with u̇_j from differentiating the line A u + B + √λ C v = 0 on
 /// v² = P(u).
