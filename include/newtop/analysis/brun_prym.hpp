@@ -22,8 +22,11 @@
 #include <array>
 #include <complex>
 #include <functional>
+#include <span>
+#include <vector>
 
 #include "newtop/analysis/brun_curve.hpp"
+#include "newtop/analysis/brun_level.hpp"
 
 namespace newtop {
 
@@ -84,5 +87,13 @@ using BrunMotion = std::function<State(double)>;
 std::array<std::complex<double>, 2> brun_prym_abel_increment(const BrunCurve& k,
                                                              const BrunMotion& x, double t0,
                                                              double t1, double tolerance);
+
+/// The Abel–Prym sums at the given ascending times ≥ 0 along the numerical motion from x0 on its
+/// level (brun_level): brun_prym_abel_increment on intervals of at most 0.5 between the states of
+/// rkf78 at 1e-14, with the states inside an interval from 32 fixed splitting8 steps from its
+/// start. Linear in t, (−2i t/κ, 0), to ~1e-11 over tens of time units (tests/integrable/
+/// test_brun_prym.cpp). Throws InputError on times out of order.
+std::vector<std::array<std::complex<double>, 2>> brun_prym_sums_along(
+    const QuadraticModel& model, const State& x0, std::span<const double> times);
 
 }  // namespace newtop
