@@ -16,8 +16,8 @@
 #include <type_traits>
 #include <variant>
 
+#include "analytic_brun.hpp"
 #include "command.hpp"
-#include "newtop/analysis/brun_level.hpp"
 #include "newtop/integrate/run.hpp"
 #include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
@@ -65,7 +65,7 @@ std::optional<double> solution_period(const AnalyticSolution& sol) {
 /// [0, T] with T from --t-end, [integrate] t_end or, without either, one period of the solution.
 /// Empty when there is no span at all (no t_end and no period).
 std::vector<double> sample_times(const AnalyticArgs& a, const io::Scenario& sc,
-                                 const AnalyticSolution& sol, std::string& source) {
+                                 std::optional<double> period, std::string& source) {
   if (a.times) {
     source = "--times";
     std::vector<double> t = parse_times("--times", *a.times);
@@ -75,7 +75,7 @@ std::vector<double> sample_times(const AnalyticArgs& a, const io::Scenario& sc,
   std::optional<double> t_end = a.t_end ? a.t_end : sc.integrate.t_end;
   source = a.t_end ? "--t-end" : "[integrate] t_end";
   if (!t_end) {
-    t_end = solution_period(sol);
+    t_end = period;
     source = "one period";
   }
   if (!t_end) {
@@ -97,62 +97,6 @@ io::Json state_json(const Body& b, const State& s) {
 }
 
 io::Json nullable(double x) { return std::isfinite(x) ? io::Json(x) : io::Json(nullptr); }
-
-/// Brun's case: the genus-2 curve w² = R(u), the ranges of u1, u2 and the torus frequencies.
-void add_brun_details(io::Json& j, const BrunCase& b, const std::vector<double>& times) {
-  const BrunCurve& k = b.curve;
-  std::vector<double> branch(k.root.begin(), k.root.end());
-  std::sort(branch.begin(), branch.end());
-  j["curve"] = {{"coefficients", k.coefficient},
-                {"branch_points", branch},
-                {"e", k.e},
-                {"nu", k.nu},
-                {"h", k.h},
-                {"c", k.c},
-                {"f", k.f},
-                {"lambda", k.lambda_}};
-  j["u_ranges"] = {{k.root[k.lower[0]], k.root[k.upper[0]]},
-                   {k.root[k.lower[1]], k.root[k.upper[1]]}};
-  j["frequencies"] = b.frequency;
-  j["periods"] = {2 * std::numbers::pi / b.frequency[0], 2 * std::numbers::pi / b.frequency[1]};
-  j["rotation_number"] = b.frequency[0] / b.frequency[1];
-  j["period_matrix"] = b.period;
-  j["sign_flips"] = b.flips;
-  j["resonant"] = b.resonance.has_value();
-  j["resonance"] =
-      b.resonance
-          ? io::Json{{"p", b.resonance->p}, {"q", b.resonance->q}, {"defect", b.resonance->defect}}
-          : io::Json(nullptr);
-  io::Json u = io::Json::array();
-  for (double t : times) {
-    const auto phi = brun_angles_at(b, t);
-    u.push_back({{"t", t}, {"u1", brun_u_at(k, 0, phi[0])}, {"u2", brun_u_at(k, 1, phi[1])}});
-  }
-  j["u"] = u;
-}
-
-/// Brun's case off the level f = 0 (unsolved): the spectral curve of the Lax pair, v² = P(u),
-/// ξ² = N(u) + 2√λ f v, with the coefficients of D = N² − 4λf² P and its roots; null when the
-/// level has no such curve (equal moments).
-io::Json brun_spectral_json(const QuadraticModel& model, const State& x0) {
-  BrunCurve k;
-  try {
-    k = brun_level(model, x0);
-  } catch (const InputError&) {
-    return nullptr;
-  }
-  const BrunSpectralCurve g = brun_spectral_curve(k);
-  io::Json roots = io::Json::array();
-  for (const auto& r : g.branch_point) roots.push_back({r.real(), r.imag()});
-  return {{"discriminant", g.discriminant},
-          {"discriminant_roots", roots},
-          {"e", k.e},
-          {"nu", k.nu},
-          {"h", k.h},
-          {"c", k.c},
-          {"f", k.f},
-          {"lambda", k.lambda_}};
-}
 
 void add_case_details(io::Json& j, const AnalyticSolution& sol, const std::vector<double>& times) {
   j["period"] = nullptr;
@@ -256,20 +200,26 @@ int run(const AnalyticArgs& a) {
     j["period"] = nullptr, j["nutation_period"] = nullptr;
     j["turning_points"] = io::Json::array(), j["samples"] = io::Json::array();
     j["max_abs_error"] = nullptr;
-    if (det.kind == AnalyticKind::brun)
+    if (det.kind == AnalyticKind::brun) {
       j["spectral_curve"] = brun_spectral_json(sc.model.quadratic(), sc.initial);
+      std::string source;
+      const std::vector<double> times = sample_times(a, sc, std::nullopt, source);
+      j["span_source"] = source;
+      j["prym"] = brun_prym_json(sc.model.quadratic(), sc.initial, times);
+    }
     if (a.json) {
       j["field"] = field_json(sc.model);
       std::cout << j.dump(2) << '\n';
     } else {
       std::cout << "newtop analytic " << sc.source << "\ncase      " << to_string(det.kind)
                 << "\n          " << det.reason << "\n";
+      if (j.contains("prym")) print_brun_prym(j["prym"]);
     }
     return kExitOk;
   }
   const AnalyticSolution sol = analytic_solution(sc.model.quadratic(), sc.initial, det.kind);
   std::string source;
-  const std::vector<double> times = sample_times(a, sc, sol, source);
+  const std::vector<double> times = sample_times(a, sc, solution_period(sol), source);
   add_case_details(j, sol, times);
   const Comparison c = compare(sc, sol, times);
   j["span_source"] = source;

@@ -38,10 +38,12 @@ AnalyticDetection detect_analytic_case(const QuadraticModel& model, const State&
               "separation (Weber, Kharlamova), genus-2 Abel-Jacobi inversion",
               true};
     }
-    return {AnalyticKind::brun,
-            "Brun's case (r0 = 0, k = 0): integrable, but only the level f = m.gamma = 0 is "
-            "solved; f != 0 needs Koetter's separation, not implemented (the spectral curve "
-            "of the level is reported)"};
+    return {
+        AnalyticKind::brun,
+        "Brun's case (r0 = 0, k = 0) on a level f != 0 (f = m.gamma): the motion is linear on the "
+        "Prym variety of the spectral curve (its three points and the Abel-Prym sums along "
+        "the numerical motion are reported); the inversion to the state at time t and the "
+        "torus frequencies are not implemented"};
   }
   return {AnalyticKind::none,
           "no integrable case: not a free body (lambda or M g r0 nonzero), not a plane motion (" +

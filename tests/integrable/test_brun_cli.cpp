@@ -1,6 +1,7 @@
 // `newtop analytic` on Brun's case: the example on the level f = 0 reports the curve, the ranges of
 // u1 and u2, the frequencies and samples that agree with rkf78; a start with f != 0 is reported as
-// Brun's case, unsolved, with no samples and with the spectral curve of its level.
+// Brun's case, unsolved, with no samples, with the spectral curve of its level and with the Prym
+// divisor whose Abel-Prym sums are linear along the numerical motion.
 
 #include <gtest/gtest.h>
 
@@ -64,6 +65,22 @@ TEST(BrunCli, NonzeroAreaIsReportedUnsolved) {
     // Companion-matrix roots polished by Newton: D(root) at rounding of the largest term.
     EXPECT_LT(std::abs(d), 1e-12 * std::abs(size));
   }
+  // The Prym divisor and the Abel-Prym sums along the motion (brun_prym.hpp): three points, the
+  // state back from them, and sums linear in t, (-2i t/kappa, 0), at the 21 samples over
+  // [integrate] t_end = 100 to the 1e-10 of tests/integrable/test_brun_prym.cpp.
+  const auto& p = j["prym"];
+  ASSERT_EQ(p["divisor"].size(), 3u);
+  EXPECT_LT(p["round_trip_error"].get<double>(), 1e-11);
+  ASSERT_EQ(p["sums"].size(), 21u);
+  EXPECT_EQ(j["span_source"], "[integrate] t_end");
+  const double kappa = 1.0 * 1.5 * 2.2;
+  EXPECT_NEAR(p["velocity"][0][1].get<double>(), -2 / kappa, 1e-15);
+  for (const auto& s : p["sums"]) {
+    EXPECT_NEAR(s["sum"][0][1].get<double>(), -2 * s["t"].get<double>() / kappa, 1e-10);
+    EXPECT_NEAR(s["sum"][0][0].get<double>(), 0.0, 1e-10);
+    EXPECT_NEAR(std::hypot(s["sum"][1][0].get<double>(), s["sum"][1][1].get<double>()), 0.0, 1e-10);
+  }
+  EXPECT_LT(p["max_abs_error"].get<double>(), 1e-10);
 }
 
 }  // namespace

@@ -2,8 +2,8 @@
 /// \file
 /// Brun's case on any level f = m·γ (spec §5): the sphero-conic coordinates with their momenta,
 /// the relations that couple them when f ≠ 0, and the spectral curve of the Lax pair of the
-/// Clebsch system (a_i = 1/I_i, b_i = λ I_i) — the setting of Kötter's separation, which is not
-/// implemented (docs/integrable.md, "Brun's case, level f ≠ 0").
+/// Clebsch system (a_i = 1/I_i, b_i = λ I_i), on whose Prym variety brun_prym.hpp makes the motion
+/// linear (docs/integrable.md, "Brun's case, level f ≠ 0").
 ///
 /// Working frame and notation of brun_curve.hpp and brun_separation.hpp. On every level,
 /// m = γ × y + f γ with y = m × γ tangent to the Poisson sphere, so (u_s, w_s) of brun_point and

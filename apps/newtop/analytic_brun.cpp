@@ -1,0 +1,130 @@
+#include "analytic_brun.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <iostream>
+#include <numbers>
+
+#include "newtop/analysis/brun_level.hpp"
+#include "newtop/analysis/brun_prym.hpp"
+#include "newtop/io/output.hpp"
+
+namespace newtop::app {
+namespace {
+
+io::Json complex_json(std::complex<double> z) { return {z.real(), z.imag()}; }
+
+}  // namespace
+
+void add_brun_details(io::Json& j, const BrunCase& b, const std::vector<double>& times) {
+  const BrunCurve& k = b.curve;
+  std::vector<double> branch(k.root.begin(), k.root.end());
+  std::sort(branch.begin(), branch.end());
+  j["curve"] = {{"coefficients", k.coefficient},
+                {"branch_points", branch},
+                {"e", k.e},
+                {"nu", k.nu},
+                {"h", k.h},
+                {"c", k.c},
+                {"f", k.f},
+                {"lambda", k.lambda_}};
+  j["u_ranges"] = {{k.root[k.lower[0]], k.root[k.upper[0]]},
+                   {k.root[k.lower[1]], k.root[k.upper[1]]}};
+  j["frequencies"] = b.frequency;
+  j["periods"] = {2 * std::numbers::pi / b.frequency[0], 2 * std::numbers::pi / b.frequency[1]};
+  j["rotation_number"] = b.frequency[0] / b.frequency[1];
+  j["period_matrix"] = b.period;
+  j["sign_flips"] = b.flips;
+  j["resonant"] = b.resonance.has_value();
+  j["resonance"] =
+      b.resonance
+          ? io::Json{{"p", b.resonance->p}, {"q", b.resonance->q}, {"defect", b.resonance->defect}}
+          : io::Json(nullptr);
+  io::Json u = io::Json::array();
+  for (double t : times) {
+    const auto phi = brun_angles_at(b, t);
+    u.push_back({{"t", t}, {"u1", brun_u_at(k, 0, phi[0])}, {"u2", brun_u_at(k, 1, phi[1])}});
+  }
+  j["u"] = u;
+}
+
+/// ξ² = N(u) + 2√λ f v, with the coefficients of D = N² − 4λf² P and its roots; null when the
+/// level has no such curve (equal moments).
+io::Json brun_spectral_json(const QuadraticModel& model, const State& x0) {
+  BrunCurve k;
+  try {
+    k = brun_level(model, x0);
+  } catch (const InputError&) {
+    return nullptr;
+  }
+  const BrunSpectralCurve g = brun_spectral_curve(k);
+  io::Json roots = io::Json::array();
+  for (const auto& r : g.branch_point) roots.push_back({r.real(), r.imag()});
+  return {{"discriminant", g.discriminant},
+          {"discriminant_roots", roots},
+          {"e", k.e},
+          {"nu", k.nu},
+          {"h", k.h},
+          {"c", k.c},
+          {"f", k.f},
+          {"lambda", k.lambda_}};
+}
+
+io::Json brun_prym_json(const QuadraticModel& model, const State& x0,
+                        const std::vector<double>& times) {
+  BrunCurve k;
+  try {
+    k = brun_level(model, x0);
+  } catch (const InputError&) {
+    return nullptr;
+  }
+  const BrunPrymDivisor d = brun_prym_divisor(k, x0);
+  io::Json points = io::Json::array();
+  for (const BrunPrymPoint& p : d) {
+    points.push_back(
+        {{"u", complex_json(p.u)}, {"v", complex_json(p.v)}, {"xi", complex_json(p.xi)}});
+  }
+  const State back = brun_prym_state(k, d);
+  const double round_trip = std::max((back.m - x0.m).cwiseAbs().maxCoeff(),
+                                     (back.gamma - x0.gamma).cwiseAbs().maxCoeff());
+  const BrunPrymRate rate = brun_prym_rate(k, x0, rhs(model, x0));
+  const std::complex<double> velocity(0.0, -2.0 / k.kappa);
+  io::Json sums = io::Json::array();
+  double max_err = 0;
+  const auto along = brun_prym_sums_along(model, x0, times);
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const std::complex<double> linear = velocity * times[i];
+    max_err = std::max({max_err, std::abs(along[i][0] - linear), std::abs(along[i][1])});
+    sums.push_back({{"t", times[i]},
+                    {"sum", {complex_json(along[i][0]), complex_json(along[i][1])}},
+                    {"linear", {complex_json(linear), complex_json(0.0)}}});
+  }
+  return {{"divisor", points},
+          {"round_trip_error", round_trip},
+          {"velocity", {complex_json(velocity), complex_json(0.0)}},
+          {"rate_at_start", {complex_json(rate.rate[0]), complex_json(rate.rate[1])}},
+          {"sums", sums},
+          {"max_abs_error", times.empty() ? io::Json(nullptr) : io::Json(max_err)}};
+}
+
+void print_brun_prym(const io::Json& prym) {
+  if (prym.is_null()) return;
+  std::cout << "prym      the motion is linear on the Prym of the spectral curve through three "
+               "points of it:\n";
+  for (const auto& p : prym["divisor"]) std::cout << "  u = " << p["u"].dump() << "\n";
+  std::cout << "  state -> points -> state: error " << format_number(prym["round_trip_error"])
+            << "\n  rates of the Abel-Prym sums at the start " << prym["rate_at_start"].dump()
+            << " (law " << prym["velocity"].dump() << ")\n";
+  if (prym["max_abs_error"].is_null()) {
+    std::cout << "  sums along the motion: no time span (give --t-end or --times)\n";
+  } else {
+    std::cout << "  sums along the motion at " << prym["sums"].size()
+              << " times: max |sum - linear law| = " << format_number(prym["max_abs_error"])
+              << "\n";
+  }
+  std::cout << "  (the inversion to the state at time t and the frequencies of f != 0 are not "
+               "implemented)\n";
+}
+
+}  // namespace newtop::app
