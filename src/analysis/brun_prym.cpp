@@ -280,6 +280,13 @@ State brun_prym_state(const BrunCurve& k, const BrunPrymDivisor& d) {
   return state;
 }
 
+State brun_c_flow(const BrunCurve& k, const State& s) {
+  const State x = to_working_frame(k, s);
+  const Vec3 dc_dm = 2 * x.m;
+  const Vec3 dc_dgamma = -2 * k.lambda_ * k.kappa * x.gamma.cwiseQuotient(k.inertia);
+  return from_working_frame(k, {x.m.cross(dc_dm) + x.gamma.cross(dc_dgamma), x.gamma.cross(dc_dm)});
+}
+
 BrunPrymRate brun_prym_rate(const BrunCurve& k, const State& s, const State& ds) {
   const auto c = isotropic(k);
   const BrunPrymLine l = line_of(k, c, to_working_frame(k, s));

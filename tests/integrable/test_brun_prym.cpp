@@ -155,6 +155,17 @@ TEST(BrunPrym, RatesAlongTheMotionAreMinusTwoIOverKappaAndZero) {
   EXPECT_GT(worst_other, 1e6 * kRate);
 }
 
+TEST(BrunPrym, RatesAlongTheFlowOfBrunsIntegralAreZeroAndMinusFourI) {
+  std::mt19937_64 rng(13);
+  for (int trial = 0; trial < 200; ++trial) {
+    const RandomLevel L = random_level(rng);
+    const BrunCurve k = brun_level(L.model, L.x0);
+    const BrunPrymRate r = brun_prym_rate(k, L.x0, brun_c_flow(k, L.x0));
+    const double err = std::max(std::abs(r.rate[0]), std::abs(r.rate[1] - Complex(0, -4)));
+    EXPECT_LT(err, kRate * r.error_scale) << trial;
+  }
+}
+
 struct Regime {
   const char* name;
   Vec3 inertia;

@@ -73,6 +73,12 @@ struct BrunPrymRate {
 };
 BrunPrymRate brun_prym_rate(const BrunCurve& k, const State& s, const State& ds);
 
+/// The Hamiltonian vector field of Brun's integral c = |m|² − λκ γ·I⁻¹γ at a body-frame state
+/// (bracket of spec §4): ṁ = m × 2m + γ × ∂c/∂γ, γ̇ = γ × 2m. It commutes with the motion, and
+/// along it the rates of the Abel–Prym sums are (0, −4i): the two flows of the Liouville torus
+/// are both straight lines on the Prym.
+State brun_c_flow(const BrunCurve& k, const State& s);
+
 /// The state of a motion at any time of the interval asked for (from a numerical integration).
 using BrunMotion = std::function<State(double)>;
 
