@@ -17,6 +17,7 @@
 
 #include "newtop/analysis/brun_level.hpp"
 #include "newtop/analysis/brun_prym.hpp"
+#include "support/problems.hpp"
 
 namespace newtop {
 namespace {
@@ -55,24 +56,10 @@ QuadraticModel model_of(const Vec3& inertia, double lambda) {
   return {Body::from_principal(inertia, 1.0, Vec3::Zero()), QuadraticField::coulomb(0.0, lambda)};
 }
 
-struct RandomLevel {
-  QuadraticModel model;
-  State x0;
-};
+using test::random_brun_level;
+using RandomLevel = test::RandomBrunLevel;
 
-/// A random Brun level with |f| up to ~2 and λ of either sign.
-RandomLevel random_level(std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> U(-1.0, 1.0);
-  const double A = 1.25 + 0.25 * U(rng), B = A + 0.45 + 0.25 * U(rng);
-  const double C = B + 0.2 + (A - 0.4) * 0.5 * (1 + U(rng));
-  const double lambda = 2.0 * U(rng);
-  Vec3 g;  // drawn in order: the arguments of one call are evaluated in no fixed order
-  for (int i = 0; i < 3; ++i) g[i] = U(rng);
-  g.normalize();
-  Vec3 m;
-  for (int i = 0; i < 3; ++i) m[i] = U(rng);
-  return {model_of(Vec3(A, B, C), lambda == 0.0 ? 0.5 : lambda), State{m, g}};
-}
+RandomLevel random_level(std::mt19937_64& rng) { return random_brun_level(rng); }
 
 TEST(BrunPrym, DivisorPointsAreZerosWhereAlphaIsAnEigenvector) {
   std::mt19937_64 rng(5);

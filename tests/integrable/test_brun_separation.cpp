@@ -10,6 +10,7 @@
 
 #include "newtop/analysis/brun_separation.hpp"
 #include "newtop/model/integrals.hpp"
+#include "support/problems.hpp"
 
 namespace newtop {
 namespace {
@@ -34,28 +35,10 @@ double round_trip_bound(const BrunCurve& k, const State& x) {
 // w² and R(u) are sums of terms of size |m|² (e3 − e1)³ ≲ 100 for the levels drawn; ~40 flops.
 constexpr double kCurveRelation = 64 * kEps;
 
-struct RandomLevel {
-  QuadraticModel model;
-  State x0;
-};
+using test::random_brun_level;
+using RandomLevel = test::RandomBrunLevel;
 
-RandomLevel random_level(std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> U(-1.0, 1.0);
-  // Distinct moments obeying the triangle inequality: A ∈ [1, 1.5], B ∈ A + [0.2, 0.7], C ∈ B +
-  // [0.2, A − 0.2].
-  const double A = 1.25 + 0.25 * U(rng), B = A + 0.45 + 0.25 * U(rng);
-  const double C = B + 0.2 + (A - 0.4) * 0.5 * (1 + U(rng));
-  const double lambda = 2.0 * U(rng);
-  Vec3 g;  // drawn in order: the arguments of one call are evaluated in no fixed order
-  for (int i = 0; i < 3; ++i) g[i] = U(rng);
-  g.normalize();
-  Vec3 m;
-  for (int i = 0; i < 3; ++i) m[i] = U(rng);
-  m -= m.dot(g) * g;  // the level f = 0
-  return {QuadraticModel{Body::from_principal(Vec3(A, B, C), 1.0, Vec3::Zero()),
-                         QuadraticField::coulomb(0.0, lambda == 0.0 ? 0.5 : lambda)},
-          State{m, g}};
-}
+RandomLevel random_level(std::mt19937_64& rng) { return random_brun_level(rng, true); }
 
 TEST(BrunSeparation, ChangeOfVariablesIsTheIdentity) {
   std::mt19937_64 rng(20240611);

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "newtop/newtop.hpp"
 
@@ -25,6 +26,31 @@ inline State generic_state(const QuadraticModel& m) {
 inline QuadraticModel brun_model() {
   return QuadraticModel{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3::Zero()),
                         QuadraticField::brun(0.8)};
+}
+
+/// A random start of a random Brun model: distinct moments obeying the triangle inequality
+/// (A ∈ [1, 1.5], B ∈ A + [0.2, 0.7], C ∈ B + [0.2, A − 0.2]), λ uniform in [−2, 2] (0 → 0.5),
+/// γ the normalised uniform cube point, m uniform in [−1, 1]³ — on the level f = 0 (m projected
+/// normal to γ) when asked, else with |f| up to ~1.7.
+struct RandomBrunLevel {
+  QuadraticModel model;
+  State x0;
+};
+
+inline RandomBrunLevel random_brun_level(std::mt19937_64& rng, bool level_f_zero = false) {
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  const double A = 1.25 + 0.25 * U(rng), B = A + 0.45 + 0.25 * U(rng);
+  const double C = B + 0.2 + (A - 0.4) * 0.5 * (1 + U(rng));
+  const double lambda = 2.0 * U(rng);
+  Vec3 g;  // drawn in order: the arguments of one call are evaluated in no fixed order
+  for (int i = 0; i < 3; ++i) g[i] = U(rng);
+  g.normalize();
+  Vec3 m;
+  for (int i = 0; i < 3; ++i) m[i] = U(rng);
+  if (level_f_zero) m -= m.dot(g) * g;
+  return {QuadraticModel{Body::from_principal(Vec3(A, B, C), 1.0, Vec3::Zero()),
+                         QuadraticField::coulomb(0.0, lambda == 0.0 ? 0.5 : lambda)},
+          State{m, g}};
 }
 
 /// Max-norm distance between two states.
