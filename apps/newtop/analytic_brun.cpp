@@ -15,20 +15,20 @@ namespace {
 
 io::Json complex_json(std::complex<double> z) { return {z.real(), z.imag()}; }
 
+/// The level's constants: e_i, the roots of N, h, c, f, λ.
+io::Json level_json(const BrunCurve& k) {
+  return {{"e", k.e}, {"nu", k.nu}, {"h", k.h}, {"c", k.c}, {"f", k.f}, {"lambda", k.lambda_}};
+}
+
 }  // namespace
 
 void add_brun_details(io::Json& j, const BrunCase& b, const std::vector<double>& times) {
   const BrunCurve& k = b.curve;
   std::vector<double> branch(k.root.begin(), k.root.end());
   std::sort(branch.begin(), branch.end());
-  j["curve"] = {{"coefficients", k.coefficient},
-                {"branch_points", branch},
-                {"e", k.e},
-                {"nu", k.nu},
-                {"h", k.h},
-                {"c", k.c},
-                {"f", k.f},
-                {"lambda", k.lambda_}};
+  j["curve"] = level_json(k);
+  j["curve"]["coefficients"] = k.coefficient;
+  j["curve"]["branch_points"] = branch;
   j["u_ranges"] = {{k.root[k.lower[0]], k.root[k.upper[0]]},
                    {k.root[k.lower[1]], k.root[k.upper[1]]}};
   j["frequencies"] = b.frequency;
@@ -61,14 +61,10 @@ io::Json brun_spectral_json(const QuadraticModel& model, const State& x0) {
   const BrunSpectralCurve g = brun_spectral_curve(k);
   io::Json roots = io::Json::array();
   for (const auto& r : g.branch_point) roots.push_back({r.real(), r.imag()});
-  return {{"discriminant", g.discriminant},
-          {"discriminant_roots", roots},
-          {"e", k.e},
-          {"nu", k.nu},
-          {"h", k.h},
-          {"c", k.c},
-          {"f", k.f},
-          {"lambda", k.lambda_}};
+  io::Json j = level_json(k);
+  j["discriminant"] = g.discriminant;
+  j["discriminant_roots"] = roots;
+  return j;
 }
 
 io::Json brun_prym_json(const QuadraticModel& model, const State& x0,
