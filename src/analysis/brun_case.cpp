@@ -28,25 +28,6 @@ auto integrand(const BrunCase& b, int s, int n) {
   };
 }
 
-std::optional<BrunResonance> find_resonance(double w1, double w2) {
-  // Continued-fraction convergents q/p of ω1/ω2 (q ω1 ≈ p ω2 means ω1 : ω2 = p : q).
-  double x = w1 / w2;
-  double h0 = 1, h1 = 0, k0 = 0, k1 = 1;  // convergents h/k of ω1/ω2 (small integers)
-  for (int it = 0; it < 40; ++it) {
-    const double a = std::floor(x);
-    const double h = a * h0 + h1, k = a * k0 + k1;
-    if (h > kResonanceOrder || k > kResonanceOrder) break;
-    const double defect = std::abs(k * w1 - h * w2) / (w1 + w2);
-    if (defect <= kResonanceTolerance) {
-      return BrunResonance{static_cast<int>(h), static_cast<int>(k), defect};
-    }
-    h1 = h0, h0 = h, k1 = k0, k0 = k;
-    if (x - a == 0.0) break;
-    x = 1.0 / (x - a);
-  }
-  return std::nullopt;
-}
-
 void set_frequencies(BrunCase& b) {
   for (int s = 0; s < 2; ++s) {
     for (int n = 0; n < 2; ++n) b.period[n][s] = integrate_one_period(integrand(b, s, n), kTwoPi);
@@ -59,7 +40,7 @@ void set_frequencies(BrunCase& b) {
   const double det = m00 * m11 - m01 * m10;
   const double rhs = 2 / b.curve.kappa;
   b.frequency = {kTwoPi * m11 * rhs / det, -kTwoPi * m10 * rhs / det};
-  b.resonance = find_resonance(b.frequency[0], b.frequency[1]);
+  b.resonance = brun_resonance(b.frequency[0], b.frequency[1]);
 }
 
 }  // namespace
@@ -147,6 +128,25 @@ State brun_state(const BrunCase& b, double t) {
   BrunAngles a = b.initial;
   a.phi = brun_angles_at(b, t);
   return brun_state_at(b.curve, a);
+}
+
+std::optional<BrunResonance> brun_resonance(double w1, double w2) {
+  // Continued-fraction convergents q/p of ω1/ω2 (q ω1 ≈ p ω2 means ω1 : ω2 = p : q).
+  double x = w1 / w2;
+  double h0 = 1, h1 = 0, k0 = 0, k1 = 1;  // convergents h/k of ω1/ω2 (small integers)
+  for (int it = 0; it < 40; ++it) {
+    const double a = std::floor(x);
+    const double h = a * h0 + h1, k = a * k0 + k1;
+    if (h > kResonanceOrder || k > kResonanceOrder) break;
+    const double defect = std::abs(k * w1 - h * w2) / (w1 + w2);
+    if (defect <= kResonanceTolerance) {
+      return BrunResonance{static_cast<int>(h), static_cast<int>(k), defect};
+    }
+    h1 = h0, h0 = h, k1 = k0, k0 = k;
+    if (x - a == 0.0) break;
+    x = 1.0 / (x - a);
+  }
+  return std::nullopt;
 }
 
 }  // namespace newtop

@@ -29,6 +29,10 @@ struct BrunResonance {
   double defect = 0;  ///< |p ω1 − q ω2| / (ω1 + ω2)
 };
 
+/// The resonance of two positive frequencies: a ratio ω1/ω2 within 1e-9 of p/q with p, q ≤ 20
+/// (continued-fraction convergents), or none.
+std::optional<BrunResonance> brun_resonance(double w1, double w2);
+
 /// The motion on one level (data only).
 struct BrunCase {
   BrunCurve curve;

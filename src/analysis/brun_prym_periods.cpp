@@ -1,0 +1,404 @@
+// GCC 12 reports a false -Wuninitialized inside Boost.Odeint's Fehlberg 7(8) copy constructor.
+#pragma GCC diagnostic ignored "-Wuninitialized"
+
+#include "newtop/analysis/brun_prym_periods.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <boost/math/quadrature/gauss.hpp>
+#include <boost/numeric/odeint.hpp>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+#include <vector>
+
+#include "newtop/analysis/brun_level.hpp"
+#include "newtop/analysis/brun_prym.hpp"
+#include "newtop/core/types.hpp"
+#include "newtop/integrate/methods.hpp"
+
+namespace newtop {
+namespace {
+
+using Complex = std::complex<double>;
+using Period = Eigen::Vector4d;  // (Re ∫du/(vξ), Re ∫u du/(vξ), Im ..., Im ...)
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+// Sub-segments of a path no longer than this fraction of the distance to the nearest branch
+// point (8-point Gauss–Legendre: relative error ~(1/20)^16 per sub-segment).
+constexpr double kSegment = 0.1;
+// A loop circles its branch point at this fraction of the distance to the nearest other one.
+constexpr double kLoopRadius = 0.3;
+constexpr int kLoopPoints = 96;
+// Sheets are told apart at this relative distance (they differ at O(1)).
+constexpr double kSheet = 1e-6;
+// Period coordinates in a basis of four periods are rational with denominators up to this.
+constexpr int kMaxDenominator = 64;
+constexpr double kRational = 1e-7;
+// Integer combinations searched for the torus lattice: |k_i| ≤ this.
+constexpr int kSearch = 24;
+// The flows over a candidate period: rkf78 at this tolerance; a period returns the state to
+// ~1e-12, a non-period misses by O(1).
+constexpr double kFlowTol = 1e-13;
+constexpr double kReturn = 1e-6;
+
+struct Curve {
+  const BrunCurve& k;
+  Complex sl;
+  std::vector<Complex> branch;
+  Complex P(Complex u) const { return (u - k.e[0]) * (u - k.e[1]) * (u - k.e[2]); }
+  Complex N(Complex u) const {
+    return (k.lambda_ * u + (k.c - k.lambda_ * (k.e[0] + k.e[1] + k.e[2]))) * u + 2 * k.kappa * k.h;
+  }
+  double clearance(Complex u) const {
+    double d = std::numeric_limits<double>::infinity();
+    for (Complex b : branch) d = std::min(d, std::abs(u - b));
+    return d;
+  }
+};
+
+struct Sheet {
+  Complex v, xi;
+};
+
+Complex nearest_sign(Complex value, Complex previous) {
+  return std::abs(value - previous) <= std::abs(value + previous) ? value : -value;
+}
+
+/// ∫ (1, u) du/(vξ) along a polyline, v and ξ continued node to node from `sheet` (left at the
+/// sheet of the last point).
+std::array<Complex, 2> path_integral(const Curve& g, const std::vector<Complex>& path,
+                                     Sheet& sheet) {
+  using G = boost::math::quadrature::gauss<double, 8>;
+  const auto& x = G::abscissa();  // the non-negative half, ascending
+  const auto& w = G::weights();
+  std::array<Complex, 2> sum{};
+  auto visit = [&](Complex u, Complex weight) {
+    sheet.v = nearest_sign(std::sqrt(g.P(u)), sheet.v);
+    sheet.xi = nearest_sign(std::sqrt(g.N(u) + 2.0 * g.sl * g.k.f * sheet.v), sheet.xi);
+    const Complex q = weight / (sheet.v * sheet.xi);
+    sum[0] += q;
+    sum[1] += u * q;
+  };
+  for (std::size_t s = 0; s + 1 < path.size(); ++s) {
+    const Complex a = path[s], b = path[s + 1];
+    const double near = std::max(std::min(g.clearance(a), g.clearance(b)), 1e-12);
+    const int n = std::max(1, static_cast<int>(std::ceil(std::abs(b - a) / (kSegment * near))));
+    for (int j = 0; j < n; ++j) {
+      const Complex ua = a + (b - a) * (double(j) / n), ub = a + (b - a) * (double(j + 1) / n);
+      const Complex mid = 0.5 * (ua + ub), half = 0.5 * (ub - ua);
+      const int m = static_cast<int>(x.size());
+      for (int i = m - 1; i >= 0; --i) visit(mid - half * x[i], half * w[i]);
+      for (int i = 0; i < m; ++i) visit(mid + half * x[i], half * w[i]);
+    }
+    visit(b, 0.0);
+  }
+  return sum;
+}
+
+/// A loop from the base point around one branch point: its end sheet from each start sheet and
+/// its integrals.
+struct Loop {
+  std::array<int, 4> end{};
+  std::array<std::array<Complex, 2>, 4> integral{};
+};
+
+double clearance_of_rays(const Curve& g, Complex base) {
+  double worst = std::numeric_limits<double>::infinity();
+  for (Complex t : g.branch) {
+    for (Complex o : g.branch) {
+      if (o == t) continue;
+      const double s =
+          std::clamp(((o - base) * std::conj(t - base)).real() / std::norm(t - base), 0.0, 1.0);
+      worst = std::min(worst, std::abs(base + s * (t - base) - o) / std::abs(t - o));
+    }
+  }
+  return worst;
+}
+
+std::vector<Loop> loops(const Curve& g, Complex base, const std::array<Sheet, 4>& sheets) {
+  auto which = [&](const Sheet& s) {
+    for (int n = 0; n < 4; ++n) {
+      if (std::abs(s.v - sheets[n].v) < kSheet * std::abs(sheets[n].v) &&
+          std::abs(s.xi - sheets[n].xi) < kSheet * std::abs(sheets[n].xi)) {
+        return n;
+      }
+    }
+    throw InputError("Brun frequencies: a loop ended off the sheets of the base point");
+  };
+  std::vector<Loop> out;
+  for (Complex t : g.branch) {
+    double rho = std::numeric_limits<double>::infinity();
+    for (Complex o : g.branch) rho = o == t ? rho : std::min(rho, std::abs(t - o));
+    rho *= kLoopRadius;
+    const Complex d = (t - base) / std::abs(t - base);
+    std::vector<Complex> path{base};
+    for (int n = 0; n <= kLoopPoints; ++n) {
+      path.push_back(t - d * rho * std::exp(Complex(0, kTwoPi * n / kLoopPoints)));
+    }
+    path.push_back(base);
+    Loop l;
+    for (int s = 0; s < 4; ++s) {
+      Sheet sh = sheets[s];
+      l.integral[s] = path_integral(g, path, sh);
+      l.end[s] = which(sh);
+    }
+    out.push_back(l);
+  }
+  return out;
+}
+
+/// The periods of every closed word of two and four loops, as vectors of R⁴.
+std::vector<Period> closed_words(const std::vector<Loop>& l) {
+  std::vector<Period> out;
+  const int n = static_cast<int>(l.size());
+  for (int length : {2, 4}) {
+    int count = 1;
+    for (int i = 0; i < length; ++i) count *= n;
+    for (int word = 0; word < count; ++word) {
+      for (int s0 = 0; s0 < 4; ++s0) {
+        int s = s0, code = word;
+        std::array<Complex, 2> total{};
+        for (int i = 0; i < length; ++i, code /= n) {
+          const Loop& g = l[code % n];
+          total[0] += g.integral[s][0], total[1] += g.integral[s][1];
+          s = g.end[s];
+        }
+        if (s == s0 && std::max(std::abs(total[0]), std::abs(total[1])) > 1e-9) {
+          out.push_back(Period(total[0].real(), total[1].real(), total[0].imag(), total[1].imag()));
+        }
+      }
+    }
+  }
+  return out;
+}
+
+/// The denominator of the best rational approximation of x with denominator ≤ kMaxDenominator,
+/// or 0 when none is within kRational.
+long denominator(double x) {
+  for (long q = 1; q <= kMaxDenominator; ++q) {
+    const double xq = x * static_cast<double>(q);
+    if (std::abs(xq - std::round(xq)) < kRational * static_cast<double>(q)) return q;
+  }
+  return 0;
+}
+
+/// A basis (columns) of the lattice the periods generate: their coordinates in four independent
+/// periods are rational; integer row reduction (Euclid, column by column) of the scaled rows.
+Eigen::Matrix4d lattice_basis(std::vector<Period> p) {
+  std::sort(p.begin(), p.end(),
+            [](const Period& a, const Period& b) { return a.norm() < b.norm(); });
+  Eigen::Matrix4d B;
+  int rank = 0;
+  for (const Period& v : p) {
+    Eigen::MatrixXd trial(4, rank + 1);
+    trial << B.leftCols(rank), v;
+    if (Eigen::FullPivLU<Eigen::MatrixXd>(trial).setThreshold(1e-6).rank() > rank)
+      B.col(rank++) = v;
+    if (rank == 4) break;
+  }
+  if (rank < 4) throw InputError("Brun frequencies: the periods span less than C^2");
+  const Eigen::PartialPivLU<Eigen::Matrix4d> lu(B);
+  std::vector<Eigen::Vector4d> coords;
+  long den = 1;
+  for (const Period& v : p) {
+    coords.push_back(lu.solve(v));
+    for (int i = 0; i < 4; ++i) {
+      const long q = denominator(coords.back()[i]);
+      if (q == 0) throw InputError("Brun frequencies: period coordinates are not rational");
+      den = std::lcm(den, q);
+    }
+  }
+  std::vector<std::array<long, 4>> rows;
+  for (const auto& c : coords) {
+    std::array<long, 4> r{};
+    for (int i = 0; i < 4; ++i) r[i] = std::lround(c[i] * static_cast<double>(den));
+    rows.push_back(r);
+  }
+  std::vector<std::array<long, 4>> echelon;
+  for (int col = 0; col < 4; ++col) {
+    std::vector<std::array<long, 4>> pivots, others;
+    for (const auto& r : rows) {
+      if (std::all_of(r.begin(), r.end(), [](long x) { return x == 0; })) continue;
+      (r[col] != 0 ? pivots : others).push_back(r);
+    }
+    while (pivots.size() > 1) {
+      std::sort(pivots.begin(), pivots.end(),
+                [&](const auto& a, const auto& b) { return std::abs(a[col]) < std::abs(b[col]); });
+      const auto pivot = pivots[0];
+      std::vector<std::array<long, 4>> rest;
+      for (std::size_t j = 1; j < pivots.size(); ++j) {
+        auto r = pivots[j];
+        const long q = r[col] / pivot[col];
+        for (int i = 0; i < 4; ++i) r[i] -= q * pivot[i];
+        (r[col] != 0 ? rest : others).push_back(r);
+      }
+      pivots = {pivot};
+      pivots.insert(pivots.end(), rest.begin(), rest.end());
+    }
+    if (!pivots.empty()) echelon.push_back(pivots[0]);
+    rows = others;
+  }
+  if (echelon.size() != 4)
+    throw InputError("Brun frequencies: the period lattice is not of rank 4");
+  Eigen::Matrix4d L;
+  for (int j = 0; j < 4; ++j) {
+    Eigen::Vector4d n;
+    for (int i = 0; i < 4; ++i)
+      n[i] = static_cast<double>(echelon[j][i]) / static_cast<double>(den);
+    L.col(j) = B * n;
+  }
+  return L;
+}
+
+/// Lagrange–Gauss reduction of a basis of a lattice of R².
+void reduce(Eigen::Vector2d& a, Eigen::Vector2d& b) {
+  for (int it = 0; it < 100; ++it) {
+    if (b.norm() < a.norm()) std::swap(a, b);
+    const double q = std::round(a.dot(b) / a.dot(a));
+    if (q == 0) break;
+    b -= q * a;
+  }
+}
+
+/// The lattice {τ : τ_H W_H + τ_c W_c ∈ Λ} (columns of L a basis of Λ), reduced.
+Eigen::Matrix2d torus_lattice(const Eigen::Matrix4d& L, const Eigen::Matrix<double, 4, 2>& W) {
+  const Eigen::Matrix<double, 4, 2> C = L.partialPivLu().solve(W);  // τ ↦ coordinates in Λ
+  // Two rows R with the best-conditioned 2×2 block: τ = R⁻¹ k; the other rows S must be integer.
+  int r0 = 0, r1 = 1;
+  double best = 0;
+  for (int i = 0; i < 4; ++i) {
+    for (int j = i + 1; j < 4; ++j) {
+      const double det = std::abs(C(i, 0) * C(j, 1) - C(i, 1) * C(j, 0));
+      if (det > best) best = det, r0 = i, r1 = j;
+    }
+  }
+  Eigen::Matrix2d R;
+  R << C.row(r0), C.row(r1);
+  const Eigen::Matrix2d Rinv = R.inverse();
+  std::vector<Eigen::Vector2d> found;
+  for (int a = -kSearch; a <= kSearch; ++a) {
+    for (int b = -kSearch; b <= kSearch; ++b) {
+      if (a == 0 && b == 0) continue;
+      const Eigen::Vector2d tau = Rinv * Eigen::Vector2d(a, b);
+      const Eigen::Vector4d n = C * tau;
+      if ((n.array() - n.array().round()).abs().maxCoeff() < 1e-6) found.push_back(tau);
+    }
+  }
+  if (found.empty()) throw InputError("Brun frequencies: no period of the torus found");
+  std::sort(found.begin(), found.end(),
+            [](const auto& x, const auto& y) { return x.norm() < y.norm(); });
+  Eigen::Vector2d u = found[0], w = u;
+  for (const auto& x : found) {
+    if (std::abs(u[0] * x[1] - u[1] * x[0]) > 1e-6 * u.norm() * x.norm()) {
+      w = x;
+      break;
+    }
+  }
+  if (w == u) throw InputError("Brun frequencies: the torus periods are collinear");
+  reduce(u, w);
+  Eigen::Matrix2d T;
+  T << u, w;
+  for (const auto& x : found) {  // every period found is an integer combination of the basis
+    const Eigen::Vector2d c = T.inverse() * x;
+    if ((c.array() - c.array().round()).abs().maxCoeff() > 1e-6) {
+      throw InputError("Brun frequencies: the torus lattice needs a finer basis");
+    }
+  }
+  return T;
+}
+
+/// max |x(τ) − x0| after the flow of H for τ_H, then the flow of c for τ_c, from x0.
+double return_error(const QuadraticModel& model, const BrunCurve& k, const State& x0,
+                    const Eigen::Vector2d& tau) {
+  Fehlberg78Stepper stepper(kFlowTol, kFlowTol);
+  const State x = integrate(stepper, model, x0, 0.0, tau[0], {}).state;
+  using Y = std::array<double, 6>;
+  Y y{x.m[0], x.m[1], x.m[2], x.gamma[0], x.gamma[1], x.gamma[2]};
+  const double sign = tau[1] >= 0 ? 1.0 : -1.0;
+  auto field = [&](const Y& a, Y& d, double) {
+    const State r = brun_c_flow(k, State{Vec3(a[0], a[1], a[2]), Vec3(a[3], a[4], a[5])});
+    for (int i = 0; i < 3; ++i) d[i] = sign * r.m[i], d[3 + i] = sign * r.gamma[i];
+  };
+  namespace ode = boost::numeric::odeint;
+  ode::integrate_adaptive(ode::make_controlled<ode::runge_kutta_fehlberg78<Y>>(kFlowTol, kFlowTol),
+                          field, y, 0.0, std::abs(tau[1]), 1e-3);
+  double err = 0;
+  for (int i = 0; i < 3; ++i) {
+    err = std::max({err, std::abs(y[i] - x0.m[i]), std::abs(y[3 + i] - x0.gamma[i])});
+  }
+  return err;
+}
+
+}  // namespace
+
+BrunPrymFrequencies brun_prym_frequencies(const QuadraticModel& model, const State& s) {
+  const BrunCurve k = brun_level(model, s);
+  if (k.f == 0.0) {
+    throw InputError("Brun frequencies: the level f = 0 has the separation of brun_case.hpp");
+  }
+  Curve g{k, std::sqrt(Complex(k.lambda_)), {}};
+  for (int i = 0; i < 3; ++i) g.branch.push_back(k.e[i]);
+  for (Complex r : brun_spectral_curve(k).branch_point) g.branch.push_back(r);
+  // The base point: of a grid below the real axis, the one whose rays to the branch points pass
+  // farthest from the other branch points.
+  double lo = g.branch[0].real(), hi = lo;
+  for (Complex b : g.branch) lo = std::min(lo, b.real()), hi = std::max(hi, b.real());
+  const double span = std::max(hi - lo, 1e-3);
+  Complex base;
+  double best = -1;
+  for (int i = 0; i <= 25; ++i) {
+    for (double y : {0.02, 0.05, 0.13, 0.3}) {
+      const Complex c(lo - 0.25 * span + 1.5 * span * i / 25, -y * span);
+      const double cl = clearance_of_rays(g, c);
+      if (cl > best) best = cl, base = c;
+    }
+  }
+  std::array<Sheet, 4> sheets{};
+  for (int sv = 0; sv < 2; ++sv) {
+    const Complex v = (sv == 0 ? 1.0 : -1.0) * std::sqrt(g.P(base));
+    for (int sx = 0; sx < 2; ++sx) {
+      sheets[2 * sv + sx] = {v,
+                             (sx == 0 ? 1.0 : -1.0) * std::sqrt(g.N(base) + 2.0 * g.sl * k.f * v)};
+    }
+  }
+  const std::vector<Period> periods = closed_words(loops(g, base, sheets));
+  const Eigen::Matrix4d L = lattice_basis(periods);
+  BrunPrymFrequencies out;
+  out.period_vectors = static_cast<int>(periods.size());
+  out.velocity_c = brun_prym_rate(k, s, brun_c_flow(k, s)).rate;
+  const Complex vh(0.0, -2.0 / k.kappa);
+  Eigen::Matrix<double, 4, 2> W;
+  W << vh.real(), out.velocity_c[0].real(), 0.0, out.velocity_c[1].real(), vh.imag(),
+      out.velocity_c[0].imag(), 0.0, out.velocity_c[1].imag();
+  Eigen::Matrix2d T = torus_lattice(L, W);
+  // The map from the torus to the Prym can be two to one: of the three index-2 sublattices, the
+  // one the flows close on (decided by integrating them over t0, t1, t0 + t1).
+  const Eigen::Vector2d t0 = T.col(0), t1 = T.col(1);
+  const bool r0 = return_error(model, k, s, t0) < kReturn;
+  const bool r1 = return_error(model, k, s, t1) < kReturn;
+  if (r0 && r1) {
+    out.index = 1;
+  } else {
+    out.index = 2;
+    if (r0) {
+      T.col(1) = 2 * t1;
+    } else if (r1) {
+      T.col(0) = 2 * t0;
+    } else if (return_error(model, k, s, t0 + t1) < kReturn) {
+      T.col(0) = t0 + t1, T.col(1) = 2 * t1;
+    } else {
+      throw InputError("Brun frequencies: the flows close on no index-2 sublattice");
+    }
+    Eigen::Vector2d a = T.col(0), b = T.col(1);
+    reduce(a, b);
+    T << a, b;
+  }
+  const Eigen::Vector2d omega = kTwoPi * T.inverse() * Eigen::Vector2d(1.0, 0.0);
+  out.frequency = {omega[0], omega[1]};
+  out.torus_period = {{{T(0, 0), T(1, 0)}, {T(0, 1), T(1, 1)}}};
+  out.resonance = brun_resonance(std::abs(omega[0]), std::abs(omega[1]));
+  return out;
+}
+
+}  // namespace newtop
