@@ -206,6 +206,12 @@ int run(const AnalyticArgs& a) {
       const std::vector<double> times = sample_times(a, sc, std::nullopt, source);
       j["span_source"] = source;
       j["prym"] = brun_prym_json(sc.model.quadratic(), sc.initial, times);
+      // The torus frequencies at the top level, as on f = 0.
+      if (!j["prym"].is_null() && j["prym"]["torus"].contains("frequencies")) {
+        for (const char* key :
+             {"frequencies", "periods", "rotation_number", "resonant", "resonance"})
+          j[key] = j["prym"]["torus"][key];
+      }
     }
     if (a.json) {
       j["field"] = field_json(sc.model);

@@ -8,6 +8,7 @@
 
 #include "newtop/analysis/brun_level.hpp"
 #include "newtop/analysis/brun_prym.hpp"
+#include "newtop/analysis/brun_prym_periods.hpp"
 #include "newtop/io/output.hpp"
 
 namespace newtop::app {
@@ -96,7 +97,27 @@ io::Json brun_prym_json(const QuadraticModel& model, const State& x0,
                     {"sum", {complex_json(along[i][0]), complex_json(along[i][1])}},
                     {"linear", {complex_json(linear), complex_json(0.0)}}});
   }
+  io::Json torus = nullptr;
+  try {
+    const BrunPrymFrequencies fr = brun_prym_frequencies(model, x0);
+    const auto& w = fr.frequency;
+    torus = {
+        {"frequencies", w},
+        {"periods", {2 * std::numbers::pi / std::abs(w[0]), 2 * std::numbers::pi / std::abs(w[1])}},
+        {"rotation_number", w[0] / w[1]},
+        {"resonant", fr.resonance.has_value()},
+        {"resonance", fr.resonance ? io::Json{{"p", fr.resonance->p},
+                                              {"q", fr.resonance->q},
+                                              {"defect", fr.resonance->defect}}
+                                   : io::Json(nullptr)},
+        {"torus_periods", fr.torus_period},
+        {"torus_index", fr.index},
+        {"velocity_c", {complex_json(fr.velocity_c[0]), complex_json(fr.velocity_c[1])}}};
+  } catch (const InputError& e) {
+    torus = {{"error", e.what()}};
+  }
   return {{"divisor", points},
+          {"torus", torus},
           {"round_trip_error", round_trip},
           {"velocity", {complex_json(velocity), complex_json(0.0)}},
           {"rate_at_start", {complex_json(rate.rate[0]), complex_json(rate.rate[1])}},
@@ -119,8 +140,15 @@ void print_brun_prym(const io::Json& prym) {
               << " times: max |sum - linear law| = " << format_number(prym["max_abs_error"])
               << "\n";
   }
-  std::cout << "  (the inversion to the state at time t and the frequencies of f != 0 are not "
-               "implemented)\n";
+  const io::Json& torus = prym["torus"];
+  if (torus.contains("frequencies")) {
+    std::cout << "  frequencies = " << torus["frequencies"].dump()
+              << " (rad per unit time; rotation number " << format_number(torus["rotation_number"])
+              << (torus["resonant"].get<bool>() ? ", resonant" : "") << ")\n";
+  } else {
+    std::cout << "  frequencies: " << torus["error"].get<std::string>() << "\n";
+  }
+  std::cout << "  (the inversion to the state at time t is not implemented)\n";
 }
 
 }  // namespace newtop::app

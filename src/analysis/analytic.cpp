@@ -41,9 +41,9 @@ AnalyticDetection detect_analytic_case(const QuadraticModel& model, const State&
     return {
         AnalyticKind::brun,
         "Brun's case (r0 = 0, k = 0) on a level f != 0 (f = m.gamma): the motion is linear on the "
-        "Prym variety of the spectral curve (its three points and the Abel-Prym sums along "
-        "the numerical motion are reported); the inversion to the state at time t and the "
-        "torus frequencies are not implemented"};
+        "Prym variety of the spectral curve (its three points, the Abel-Prym sums along the "
+        "numerical motion and the torus frequencies are reported); the inversion to the "
+        "state at time t is not implemented"};
   }
   return {AnalyticKind::none,
           "no integrable case: not a free body (lambda or M g r0 nonzero), not a plane motion (" +

@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <complex>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <string>
 
 #include "support/cli.hpp"
@@ -81,6 +83,18 @@ TEST(BrunCli, NonzeroAreaIsReportedUnsolved) {
     EXPECT_NEAR(std::hypot(s["sum"][1][0].get<double>(), s["sum"][1][1].get<double>()), 0.0, 1e-10);
   }
   EXPECT_LT(p["max_abs_error"].get<double>(), 1e-10);
+  // The torus frequencies (brun_prym_periods.hpp, checked in test_brun_prym_periods.cpp) at the
+  // top level as on f = 0, with the torus periods they come from.
+  ASSERT_EQ(j["frequencies"].size(), 2u);
+  EXPECT_EQ(j["frequencies"], p["torus"]["frequencies"]);
+  const auto& T = p["torus"]["torus_periods"];
+  const double det =
+      T[0][0].get<double>() * T[1][1].get<double>() - T[1][0].get<double>() * T[0][1].get<double>();
+  // ω = 2π T⁻¹ (1, 0).
+  EXPECT_NEAR(j["frequencies"][0].get<double>(), 2 * std::numbers::pi * T[1][1].get<double>() / det,
+              1e-12);
+  EXPECT_NEAR(j["frequencies"][1].get<double>(),
+              -2 * std::numbers::pi * T[0][1].get<double>() / det, 1e-12);
 }
 
 }  // namespace
