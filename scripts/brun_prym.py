@@ -20,6 +20,11 @@ the Prym of Gamma gives the frequencies of the motion on f != 0:
    Python module (splitting6, step 0.005) by the peak of a windowed Fourier transform (C-infinity
    bump window), and each written as an integer combination of omega.
 
+The library's brun_prym_frequencies (include/newtop/analysis/brun_prym_periods.hpp) finds the
+torus lattice exactly, from the velocities of the flows of H and of Brun's integral on the Prym;
+on the levels tried the basis of step 3 generates an index-2 submodule of its frequencies, which is
+why halves of combinations appear below.
+
 usage: PYTHONPATH=build/python python3 scripts/brun_prym.py [--lambda X] [f ...]
 The level is the start of examples/analytic_brun.toml (lambda = -0.8 unless --lambda) with
 m -> m + f gamma.
