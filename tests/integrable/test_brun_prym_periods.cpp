@@ -92,7 +92,8 @@ std::vector<double> lines(const std::vector<double>& s, int count) {
   for (double nu = 0.05; nu <= 3.0; nu += 0.002) grid.emplace_back(amplitude(s, nu), nu);
   std::sort(grid.rbegin(), grid.rend());
   std::vector<double> out;
-  for (const auto& [a, nu] : grid) {
+  for (const auto& entry : grid) {
+    const double nu = entry.second;
     if (static_cast<int>(out.size()) == count) break;
     if (std::any_of(out.begin(), out.end(), [&](double x) { return std::abs(x - nu) < 0.03; }))
       continue;
