@@ -258,7 +258,10 @@ BrunPrymFrequencies brun_prym_frequencies(const QuadraticModel& model, const Sta
     reduce(a, b);
     T << a, b;
   }
-  const Eigen::Vector2d omega = kTwoPi * T.inverse() * Eigen::Vector2d(1.0, 0.0);
+  Eigen::Vector2d omega = kTwoPi * T.inverse() * Eigen::Vector2d(1.0, 0.0);
+  for (int c = 0; c < 2; ++c) {  // the basis cycle turned so that its angle grows with t
+    if (omega[c] < 0) omega[c] = -omega[c], T.col(c) = -T.col(c);
+  }
   out.frequency = {omega[0], omega[1]};
   out.torus_period = {{{T(0, 0), T(1, 0)}, {T(0, 1), T(1, 1)}}};
   out.resonance = brun_resonance(std::abs(omega[0]), std::abs(omega[1]));

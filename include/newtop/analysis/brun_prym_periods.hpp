@@ -16,7 +16,8 @@
 /// is the torus is decided by integrating the two flows over short candidate periods (rkf78 at
 /// 1e-13: a period returns the state to ~1e-12, a non-period misses by O(1)) — a discrete choice;
 /// the numbers come from the periods. The basis T1, T2 is Lagrange–Gauss reduced, and the
-/// frequencies (rad per unit time of the motion) are ω = 2π [T1 T2]⁻¹ (1, 0): the motion is
+/// frequencies (rad per unit time of the motion, made ≥ 0 by the orientation of T1, T2) are
+/// ω = 2π [T1 T2]⁻¹ (1, 0): the motion is
 /// φ_k = φ_k(0) + ω_k t on the torus, and every frequency of the motion is an integer combination
 /// of ω.
 
