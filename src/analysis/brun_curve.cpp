@@ -111,10 +111,20 @@ State from_working_frame(const BrunCurve& k, const State& w) {
   return s;
 }
 
-double brun_N(const BrunCurve& k, double u) {
+namespace {
+
+/// N(u) = λu² + (c − λ(e1 + e2 + e3)) u + 2κh, real or complex u.
+template <class T>
+T N_of(const BrunCurve& k, T u) {
   const double S = k.e[0] + k.e[1] + k.e[2];
   return (k.lambda_ * u + (k.c - k.lambda_ * S)) * u + 2 * k.kappa * k.h;
 }
+
+}  // namespace
+
+double brun_N(const BrunCurve& k, double u) { return N_of(k, u); }
+
+std::complex<double> brun_N(const BrunCurve& k, std::complex<double> u) { return N_of(k, u); }
 
 double brun_R(const BrunCurve& k, double u) {
   return -(u - k.e[0]) * (u - k.e[1]) * (u - k.e[2]) * brun_N(k, u);

@@ -194,8 +194,7 @@ BrunPrymDivisor brun_prym_divisor(const BrunCurve& k, const State& s) {
     const Complex xi_sign = eigenvalue(k, c, x, u, v);
     // The value from ξ² = N(u) + 2√λ f v (u and v are accurate; the w_i are not near u = e_i),
     // the sign from the eigenvector.
-    const Complex N = (k.lambda_ * u + (k.c - k.lambda_ * S1)) * u + 2 * k.kappa * k.h;
-    Complex xi = std::sqrt(N + 2.0 * sl * k.f * v);
+    Complex xi = std::sqrt(brun_N(k, u) + 2.0 * sl * k.f * v);
     if (std::abs(xi - xi_sign) > std::abs(xi + xi_sign)) xi = -xi;
     d[r] = {u, v, xi};
   }

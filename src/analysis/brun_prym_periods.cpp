@@ -46,9 +46,7 @@ struct Curve {
   Complex sl;
   std::vector<Complex> branch;
   Complex P(Complex u) const { return (u - k.e[0]) * (u - k.e[1]) * (u - k.e[2]); }
-  Complex N(Complex u) const {
-    return (k.lambda_ * u + (k.c - k.lambda_ * (k.e[0] + k.e[1] + k.e[2]))) * u + 2 * k.kappa * k.h;
-  }
+  Complex N(Complex u) const { return brun_N(k, u); }
   double clearance(Complex u) const {
     double d = std::numeric_limits<double>::infinity();
     for (Complex b : branch) d = std::min(d, std::abs(u - b));

@@ -13,6 +13,7 @@
 /// consecutive roots of R (the e_i and the roots ν of N) where R ≥ 0.
 
 #include <array>
+#include <complex>
 
 #include "newtop/model/basic_model.hpp"
 
@@ -57,6 +58,7 @@ BrunCurve brun_curve(const QuadraticModel& model, const State& x0);
 
 /// N(u) and R(u) = −P(u) N(u).
 double brun_N(const BrunCurve& k, double u);
+std::complex<double> brun_N(const BrunCurve& k, std::complex<double> u);
 double brun_R(const BrunCurve& k, double u);
 
 /// R(u)/((u − a_s)(b_s − u)) on the range of u_s, as a product of |u − r| over the other three
