@@ -18,6 +18,8 @@ std::vector<MethodInfo> make_methods() {
   m.push_back({"rkf78", MethodKind::adaptive, 8, "Fehlberg 7(8), adaptive (Boost.Odeint)"});
   m.push_back({"dop853", MethodKind::adaptive, 8,
                "Dormand–Prince 8(5,3), adaptive, dense output of order 7"});
+  m.push_back({"taylor", MethodKind::adaptive, 0,
+               "Taylor series, adaptive step, order from the tolerance (quadratic field only)"});
   return m;
 }
 

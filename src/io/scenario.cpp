@@ -7,6 +7,7 @@
 #include "file_check.hpp"
 #include "mesh_section.hpp"
 #include "newtop/exact/exact_field.hpp"
+#include "newtop/integrate/taylor.hpp"
 #include "scenario_sections.hpp"
 #include "toml_parse.hpp"
 
@@ -263,6 +264,10 @@ MethodSettings resolve_method(const Scenario& s, const IntegrateOverrides& o) {
   }
   const MethodInfo& info = method_info(m.name);
   const bool adaptive = info.kind == MethodKind::adaptive;
+  if (m.name == "taylor" && s.model.kind() != FieldKind::quadratic) {
+    throw InputError(s.source + ": " + kTaylorFieldOnly + ", found the " +
+                     to_string(s.model.kind()) + " field");
+  }
   if (!named && !step && !tol) {
     throw InputError(s.source +
                      ": [integrate]: a step or a tolerance is needed: give --step (fixed step, " +

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <string>
 
+#include "newtop/integrate/taylor.hpp"
+
 namespace newtop::phase {
 
 namespace {
@@ -108,6 +110,7 @@ void check_ensemble_tangent_split(FreeBodySplit split) {
 
 void check_tangent_method(const MethodSettings& settings) {
   validate(settings);
+  if (settings.name == "taylor") throw InputError(kTaylorNoTangent);
   if (method_info(settings.name).kind == MethodKind::splitting) {
     check_tangent_split(free_body_split(settings));
   }

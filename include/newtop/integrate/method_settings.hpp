@@ -22,7 +22,8 @@ struct MethodInfo {
   std::string_view description;
 };
 
-/// Every method newtop can run: the splitting compositions, rk4, dopri5, rkf78, dop853.
+/// Every method newtop can run: the splitting compositions, rk4, dopri5, rkf78, dop853, taylor
+/// (order 0 in MethodInfo: Taylor's order follows the tolerance).
 std::span<const MethodInfo> methods();
 /// The method with this name; throws InputError listing the known names if there is none.
 const MethodInfo& method_info(std::string_view name);

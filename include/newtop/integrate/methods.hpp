@@ -13,12 +13,14 @@
 #include "newtop/integrate/runge_kutta.hpp"
 #include "newtop/integrate/sampled.hpp"
 #include "newtop/integrate/splitting.hpp"
+#include "newtop/integrate/taylor.hpp"
 
 namespace newtop {
 
 /// Calls fn(stepper) with a stepper of the named method (settings validated) and returns its
-/// result.
-template <class Fn>
+/// result. kWithTaylor = false: for callers with no use for TaylorStepper (the tangent maps), which
+/// get InputError for "taylor" instead.
+template <bool kWithTaylor = true, class Fn>
 decltype(auto) with_stepper(const MethodSettings& settings, Fn&& fn) {
   validate(settings);
   const MethodInfo& info = method_info(settings.name);
@@ -38,6 +40,14 @@ decltype(auto) with_stepper(const MethodSettings& settings, Fn&& fn) {
   if (settings.name == "dop853") {
     Dop853Stepper s(settings.abs_tol, settings.rel_tol);
     return fn(s);
+  }
+  if (settings.name == "taylor") {
+    if constexpr (kWithTaylor) {
+      TaylorStepper s(settings.abs_tol, settings.rel_tol);
+      return fn(s);
+    } else {
+      throw InputError(kTaylorNoTangent);
+    }
   }
   Fehlberg78Stepper s(settings.abs_tol, settings.rel_tol);
   return fn(s);

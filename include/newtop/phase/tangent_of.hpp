@@ -93,7 +93,7 @@ typename TangentOf<S>::type tangent_of(const S& stepper) {
 template <class Fn>
 decltype(auto) with_tangent_stepper(const MethodSettings& settings, Fn&& fn) {
   check_tangent_method(settings);
-  return with_stepper(settings, [&](auto& s) {
+  return with_stepper<false>(settings, [&](auto& s) {
     auto t = tangent_of(s);
     return fn(t);
   });
