@@ -110,6 +110,17 @@ struct Dop853EveryStepAccepted {
   }
 };
 
+/// Taylor's step at tolerance 1e-12 (order 19) as a fixed step: the coefficients at the point and
+/// the series summed at h (the step the method would take there is longer than kStep).
+struct TaylorFixedStep {
+  TaylorStepper s{1e-12, 1e-12};
+  int order() const { return s.order(); }
+  void step(const QuadraticModel& m, State& x, double h) {
+    double t = 0.0, dt = h;
+    s.try_step(m, x, t, dt);
+  }
+};
+
 std::map<std::string, std::function<Steps()>> benchmarks() {
   std::map<std::string, std::function<Steps()>> b;
   for (const char* name : {"splitting2", "splitting4", "splitting6", "splitting8"}) {
@@ -143,6 +154,7 @@ std::map<std::string, std::function<Steps()>> benchmarks() {
         OdeintFixedStepper<boost::numeric::odeint::runge_kutta_fehlberg78<OdeState>, 8>());
   };
   b["dop853_accepted_step"] = [] { return newtop_steps(Dop853EveryStepAccepted()); };
+  b["taylor19_step"] = [] { return newtop_steps(TaylorFixedStep()); };
   b["odeint_runge_kutta4_peer"] = odeint_rk4_steps;
   return b;
 }

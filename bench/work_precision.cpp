@@ -97,6 +97,7 @@ std::vector<Method> methods(bool exact_allowed) {
     }
   }
   m.push_back(newtop_adaptive<Dop853Stepper>("newtop dop853"));
+  m.push_back(newtop_adaptive<TaylorStepper>("newtop taylor"));
   m.push_back(newtop_adaptive<Fehlberg78Stepper>("newtop rkf78 (odeint through newtop)"));
   m.push_back(peer<ode::runge_kutta_fehlberg78<OdeState>>("odeint rkf78 (peer)"));
   m.push_back(peer<ode::runge_kutta_dopri5<OdeState>>("odeint dopri5 (peer)"));

@@ -155,7 +155,7 @@ TEST(OutputTimes, AdaptiveSamplesAgreeWithReferenceAsWellAsStepEnds) {
   constexpr double T = 10.0, kTol = 1e-10;
   const OutputTimes every = OutputTimes::every(0.05, 0.0, T);
   const std::vector<State> ref = reference_at(m, x0, every, T);
-  for (const char* name : {"rkf78", "dopri5", "dop853"}) {
+  for (const char* name : {"rkf78", "dopri5", "dop853", "taylor"}) {
     std::vector<double> step_t;
     std::vector<State> step_x, sample_x(ref.size());
     const MethodSettings settings{name, 0.0, kTol, kTol, std::nullopt};

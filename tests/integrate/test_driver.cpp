@@ -48,7 +48,7 @@ constexpr double kLongRunDrift = 1e-6;
 TEST(AdaptiveDriver, LongRunsFinish) {
   const QuadraticModel m = lagrange_like();
   const State x0 = lagrange_like_state(m);
-  for (const char* name : {"rkf78", "dopri5", "dop853"}) {
+  for (const char* name : {"rkf78", "dopri5", "dop853", "taylor"}) {
     const MethodSettings settings{name, 0.0, 1e-12, 1e-12, std::nullopt};
     double drift = 0;
     const double e0 = energy(m, x0), l0 = lagrange(m, x0);

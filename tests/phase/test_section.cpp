@@ -101,7 +101,8 @@ TEST(Section, CrossingsLieOnTheSurfaceToRoundOff) {
   for (const char* surface : {"gamma3 = 0", "omega1 = 0.2", "gamma1 + 0.5*gamma2 - m3 = 0.1"}) {
     for (const MethodSettings& m :
          {fixed("splitting6", 0.02), fixed("splitting2", 0.01), fixed("rk4", 0.01),
-          adaptive("rkf78", 1e-10), adaptive("dopri5", 1e-9), adaptive("dop853", 1e-10)}) {
+          adaptive("rkf78", 1e-10), adaptive("dopri5", 1e-9), adaptive("dop853", 1e-10),
+          adaptive("taylor", 1e-10)}) {
       const SectionResult r = section(model, x0, surface, m, 60.0, Direction::both);
       ASSERT_GE(r.crossings.size(), 4u) << surface << " " << m.name;
       const phase::SurfaceFunction g(phase::parse_surface(surface), model.body);

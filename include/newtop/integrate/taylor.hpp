@@ -38,7 +38,8 @@ struct TaylorSeries {
   alignas(32) std::array<Lanes, kMaxOrder + 1> m{}, gamma{}, q{};
 };
 
-/// The parameters of the recurrences: 1/I, k, M g r0, (B − C, C − A, A − B), λ (C − B, A − C, B − A).
+/// The parameters of the recurrences: 1/I, k, M g r0, (B − C, C − A, A − B), λ (C − B, A − C, B −
+/// A).
 struct TaylorModel {
   alignas(32) std::array<double, 4> inv_i{}, k{}, b{}, d_spin{}, d_field{};
   explicit TaylorModel(const QuadraticModel& model);

@@ -3,8 +3,8 @@
 /// The one-step map x ↦ Φ_h(x) of a stepper of the conformance suite, for any h: a fixed-step
 /// method's own step; for an embedded Runge–Kutta pair, one step of the pair's propagated formula
 /// with no error control (the formula every accepted step of the adaptive run applies;
-/// Dormand–Prince 8(5,3) likewise; Taylor's series summed at h). Event location lands on a surface with it, so that a located
-/// point lies on the method's own solution.
+/// Dormand–Prince 8(5,3) likewise; Taylor's series summed at h). Event location lands on a surface
+/// with it, so that a located point lies on the method's own solution.
 
 #include <limits>
 
