@@ -21,92 +21,160 @@ namespace newtop {
 namespace detail {
 namespace {
 
-using V = double __attribute__((vector_size(32)));
 using Lanes = TaylorSeries::Lanes;
-
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define NEWTOP_TAYLOR_KERNEL __attribute__((target_clones("avx2", "default")))
-#else
-#define NEWTOP_TAYLOR_KERNEL
-#endif
-
-#define NEWTOP_ROT1(a) __builtin_shufflevector(a, a, 1, 2, 0, 3)  // (y, z, x, w)
-#define NEWTOP_ROT2(a) __builtin_shufflevector(a, a, 2, 0, 1, 3)  // (z, x, y, w)
-
-inline V load(const Lanes& a) {
-  V v;
-  std::memcpy(&v, a.data(), sizeof v);
-  return v;
-}
-
-inline void store(Lanes& a, const V& v) { std::memcpy(a.data(), &v, sizeof v); }
-
 constexpr int K = TaylorSeries::kMaxOrder + 1;
 
-// The coefficients 1..order from those of order 0 in s.
-NEWTOP_TAYLOR_KERNEL void expand_kernel(const TaylorModel& p, int order, TaylorSeries& s) {
-  V W[K], W1[K], W2[K], G[K], G1[K], G2[K], Q[K], Q1[K], Q2[K], Qw[K];
-  const V inv_i = load(p.inv_i), k = load(p.k), b = load(p.b), d_spin = load(p.d_spin),
-          d_field = load(p.d_field);
-  const V k1 = NEWTOP_ROT1(k), k2 = NEWTOP_ROT2(k), b1 = NEWTOP_ROT1(b), b2 = NEWTOP_ROT2(b);
-  W[0] = (load(s.m[0]) - k) * inv_i;
-  G[0] = load(s.gamma[0]);
-  if (s.attitude) Q[0] = load(s.q[0]);
+// Four lanes in one AVX2 register (x86-64 with AVX2), or in two 2-lane registers (the baseline
+// instruction set, where GCC would split a 4-lane vector through memory). The same operations on
+// the same lanes in the same order either way.
+using V4 = double __attribute__((vector_size(32)));
+using V2 = double __attribute__((vector_size(16)));
+
+struct Pair4 {
+  V2 lo, hi;  // (x, y), (z, w)
+};
+[[gnu::always_inline]] inline Pair4 operator+(const Pair4& a, const Pair4& b) {
+  return {a.lo + b.lo, a.hi + b.hi};
+}
+[[gnu::always_inline]] inline Pair4 operator-(const Pair4& a, const Pair4& b) {
+  return {a.lo - b.lo, a.hi - b.hi};
+}
+[[gnu::always_inline]] inline Pair4 operator*(const Pair4& a, const Pair4& b) {
+  return {a.lo * b.lo, a.hi * b.hi};
+}
+[[gnu::always_inline]] inline Pair4 operator*(const Pair4& a, double s) {
+  return {a.lo * s, a.hi * s};
+}
+[[gnu::always_inline]] inline Pair4& operator+=(Pair4& a, const Pair4& b) { return a = a + b; }
+
+template <class L>
+struct LaneOps;
+
+template <>
+struct LaneOps<V4> {
+  [[gnu::always_inline]] static V4 load(const Lanes& a) {
+    V4 v;
+    std::memcpy(&v, a.data(), sizeof v);
+    return v;
+  }
+  [[gnu::always_inline]] static void store(Lanes& a, const V4& v) {
+    std::memcpy(a.data(), &v, sizeof v);
+  }
+  [[gnu::always_inline]] static V4 rot1(const V4& a) {
+    return __builtin_shufflevector(a, a, 1, 2, 0, 3);
+  }  // (y, z, x, w)
+  [[gnu::always_inline]] static V4 rot2(const V4& a) {
+    return __builtin_shufflevector(a, a, 2, 0, 1, 3);
+  }  // (z, x, y, w)
+  [[gnu::always_inline]] static double lane(const V4& a, int i) { return a[i]; }
+  [[gnu::always_inline]] static void set_w(V4& a, double w) { a[3] = w; }
+  [[gnu::always_inline]] static V4 splat3(double w) { return V4{w, w, w, 0.0}; }
+};
+
+template <>
+struct LaneOps<Pair4> {
+  [[gnu::always_inline]] static Pair4 load(const Lanes& a) {
+    return {V2{a[0], a[1]}, V2{a[2], a[3]}};
+  }
+  [[gnu::always_inline]] static void store(Lanes& a, const Pair4& v) {
+    a = {v.lo[0], v.lo[1], v.hi[0], v.hi[1]};
+  }
+  [[gnu::always_inline]] static Pair4 rot1(const Pair4& a) {
+    return {__builtin_shufflevector(a.lo, a.hi, 1, 2), __builtin_shufflevector(a.lo, a.hi, 0, 3)};
+  }
+  [[gnu::always_inline]] static Pair4 rot2(const Pair4& a) {
+    return {__builtin_shufflevector(a.lo, a.hi, 2, 0), __builtin_shufflevector(a.lo, a.hi, 1, 3)};
+  }
+  [[gnu::always_inline]] static double lane(const Pair4& a, int i) {
+    return i < 2 ? a.lo[i] : a.hi[i - 2];
+  }
+  [[gnu::always_inline]] static void set_w(Pair4& a, double w) { a.hi[1] = w; }
+  [[gnu::always_inline]] static Pair4 splat3(double w) { return {V2{w, w}, V2{w, 0.0}}; }
+};
+
+// The coefficients 1..order from those of order 0 in s, in lanes of type L.
+template <class L>
+[[gnu::always_inline]] inline void expand_lanes(const TaylorModel& p, int order, TaylorSeries& s) {
+  using O = LaneOps<L>;
+  struct Rotated {
+    L w1, w2, g1, g2;  // ω and γ rotated once and twice
+  };
+  Rotated R[K];
+  L W[K], Q[K], Q1[K], Q2[K], Qw[K];
+  const L inv_i = O::load(p.inv_i), k = O::load(p.k), b = O::load(p.b), d_spin = O::load(p.d_spin),
+          d_field = O::load(p.d_field);
+  const L k1 = O::rot1(k), k2 = O::rot2(k), b1 = O::rot1(b), b2 = O::rot2(b);
+  W[0] = (O::load(s.m[0]) - k) * inv_i;
+  L G = O::load(s.gamma[0]);
+  if (s.attitude) Q[0] = O::load(s.q[0]);
   for (int n = 0; n < order; ++n) {
-    W1[n] = NEWTOP_ROT1(W[n]);
-    W2[n] = NEWTOP_ROT2(W[n]);
-    G1[n] = NEWTOP_ROT1(G[n]);
-    G2[n] = NEWTOP_ROT2(G[n]);
-    // Σ_j ω₂ω₃ (P), γ₂γ₃ (R), γ₂ω₃ and γ₃ω₂ (S, T), cyclic in the lanes; two interleaved halves
+    Rotated& r = R[n];
+    r = {O::rot1(W[n]), O::rot2(W[n]), O::rot1(G), O::rot2(G)};
+    // Σ_j ω₂ω₃ (P), γ₂γ₃ (Rs), γ₂ω₃ and γ₃ω₂ (S, T), cyclic in the lanes; two interleaved halves
     // (even and odd j) shorten the chains of additions.
-    V P{}, R{}, S{}, T{}, Pb{}, Rb{}, Sb{}, Tb{};
+    L P{}, Rs{}, S{}, T{}, Pb{}, Rb{}, Sb{}, Tb{};
     int j = 0;
     for (; j + 1 <= n; j += 2) {
-      P += W1[j] * W2[n - j];
-      R += G1[j] * G2[n - j];
-      S += G1[j] * W2[n - j];
-      T += G2[j] * W1[n - j];
-      Pb += W1[j + 1] * W2[n - j - 1];
-      Rb += G1[j + 1] * G2[n - j - 1];
-      Sb += G1[j + 1] * W2[n - j - 1];
-      Tb += G2[j + 1] * W1[n - j - 1];
+      const Rotated &a = R[j], &c = R[n - j], &a1 = R[j + 1], &c1 = R[n - j - 1];
+      P += a.w1 * c.w2;
+      Rs += a.g1 * c.g2;
+      S += a.g1 * c.w2;
+      T += a.g2 * c.w1;
+      Pb += a1.w1 * c1.w2;
+      Rb += a1.g1 * c1.g2;
+      Sb += a1.g1 * c1.w2;
+      Tb += a1.g2 * c1.w1;
     }
     if (j == n) {
-      P += W1[n] * W2[0];
-      R += G1[n] * G2[0];
-      S += G1[n] * W2[0];
-      T += G2[n] * W1[0];
+      const Rotated &a = R[n], &c = R[0];
+      P += a.w1 * c.w2;
+      Rs += a.g1 * c.g2;
+      S += a.g1 * c.w2;
+      T += a.g2 * c.w1;
     }
     P += Pb;
-    R += Rb;
+    Rs += Rb;
     S += Sb;
     T += Tb;
     const double inv = 1.0 / static_cast<double>(n + 1);
-    const V m_next =
-        (d_spin * P + d_field * R + (k1 * W2[n] - k2 * W1[n]) + (G1[n] * b2 - G2[n] * b1)) * inv;
-    store(s.m[n + 1], m_next);
+    const L m_next =
+        (d_spin * P + d_field * Rs + (k1 * r.w2 - k2 * r.w1) + (r.g1 * b2 - r.g2 * b1)) * inv;
+    O::store(s.m[n + 1], m_next);
     W[n + 1] = m_next * inv_i;
-    G[n + 1] = (S - T) * inv;
-    store(s.gamma[n + 1], G[n + 1]);
+    G = (S - T) * inv;
+    O::store(s.gamma[n + 1], G);
     if (s.attitude) {
       // q ⊗ (0, u) = (w u + v × u, −v·u) in lanes (x, y, z | w).
-      Q1[n] = NEWTOP_ROT1(Q[n]);
-      Q2[n] = NEWTOP_ROT2(Q[n]);
-      const double w = Q[n][3];
-      Qw[n] = V{w, w, w, 0.0};
-      V A{}, X{}, Y{}, D{};
+      Q1[n] = O::rot1(Q[n]);
+      Q2[n] = O::rot2(Q[n]);
+      Qw[n] = O::splat3(O::lane(Q[n], 3));
+      L A{}, X{}, Y{}, D{};
       for (int i = 0; i <= n; ++i) {
         A += Qw[i] * W[n - i];
-        X += Q1[i] * W2[n - i];
-        Y += Q2[i] * W1[n - i];
+        X += Q1[i] * R[n - i].w2;
+        Y += Q2[i] * R[n - i].w1;
         D += Q[i] * W[n - i];
       }
-      V q_next = (A + X - Y) * (0.5 * inv);
-      q_next[3] = -(D[0] + D[1] + D[2]) * (0.5 * inv);
+      L q_next = (A + X - Y) * (0.5 * inv);
+      O::set_w(q_next, -(O::lane(D, 0) + O::lane(D, 1) + O::lane(D, 2)) * (0.5 * inv));
       Q[n + 1] = q_next;
-      store(s.q[n + 1], q_next);
+      O::store(s.q[n + 1], q_next);
     }
   }
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+[[gnu::target("avx2")]] void expand_avx2(const TaylorModel& p, int order, TaylorSeries& s) {
+  expand_lanes<V4>(p, order, s);
+}
+#endif
+
+void expand_kernel(const TaylorModel& p, int order, TaylorSeries& s, bool baseline) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx2 && !baseline) return expand_avx2(p, order, s);
+#endif
+  expand_lanes<Pair4>(p, order, s);
 }
 
 double norm_inf(const Lanes& a, int lanes) {
@@ -142,13 +210,13 @@ TaylorModel::TaylorModel(const QuadraticModel& model) {
 }
 
 void taylor_expand(const TaylorModel& model, const State& x, const Quaternion* q, int order,
-                   TaylorSeries& s) {
+                   TaylorSeries& s, bool baseline) {
   s.order = order;
   s.attitude = q != nullptr;
   s.m[0] = {x.m.x(), x.m.y(), x.m.z(), 0.0};
   s.gamma[0] = {x.gamma.x(), x.gamma.y(), x.gamma.z(), 0.0};
   if (q != nullptr) s.q[0] = {q->x(), q->y(), q->z(), q->w()};
-  expand_kernel(model, order, s);
+  expand_kernel(model, order, s, baseline);
 }
 
 State taylor_state(const TaylorSeries& s, double h) {

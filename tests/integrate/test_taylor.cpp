@@ -64,6 +64,22 @@ TEST(TaylorSeries, FirstTwoCoefficientsAreTheRightHandSideAndItsDerivative) {
   EXPECT_LT((series_q2 - q2).cwiseAbs().maxCoeff(), kSecondOrder);
 }
 
+// The coefficients are the same bits with and without AVX2 (lane-wise operations in one order, no
+// fused multiply-adds): a run's numbers do not depend on the processor it lands on.
+TEST(TaylorSeries, SameBitsOnEveryInstructionSet) {
+  const QuadraticModel m = test::generic_model(Vec3(0.1, -0.2, 0.3));
+  const OrientedState x = generic_oriented(m);
+  detail::TaylorSeries a, b;
+  detail::taylor_expand(detail::TaylorModel(m), x, &x.q, 30, a);
+  detail::taylor_expand(detail::TaylorModel(m), x, &x.q, 30, b, true);
+  for (int n = 0; n <= 30; ++n) {
+    const auto i = static_cast<std::size_t>(n);
+    EXPECT_EQ(a.m[i], b.m[i]) << n;
+    EXPECT_EQ(a.gamma[i], b.gamma[i]) << n;
+    EXPECT_EQ(a.q[i], b.q[i]) << n;
+  }
+}
+
 // The free body (g = λ = 0): the series of order 30 summed at h = 0.3 against the closed form of
 // Euler–Poinsot (Jacobi functions and the precession angle). The terms fall like (h/ρ)^n with ρ,
 // the distance to the nearest complex singularity, above 1 here: the truncation is below 1e-20,

@@ -45,9 +45,11 @@ struct TaylorModel {
   explicit TaylorModel(const QuadraticModel& model);
 };
 
-/// Fills s with the coefficients through (m, γ) (and q when q is not null) to the given order.
+/// Fills s with the coefficients through (m, γ) (and q when q is not null) to the given order: in
+/// 4-lane vectors where the processor has AVX2, in 2-lane ones otherwise or when `baseline` is
+/// set (for the test that both give the same bits).
 void taylor_expand(const TaylorModel& model, const State& x, const Quaternion* q, int order,
-                   TaylorSeries& s);
+                   TaylorSeries& s, bool baseline = false);
 /// The series summed at h (Horner).
 State taylor_state(const TaylorSeries& s, double h);
 Quaternion taylor_attitude(const TaylorSeries& s, double h);
