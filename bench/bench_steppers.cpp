@@ -110,7 +110,7 @@ struct Dop853EveryStepAccepted {
   }
 };
 
-/// Taylor's step at tolerance 1e-12 (order 19) as a fixed step: the coefficients at the point and
+/// Taylor's step at tolerance 1e-12 (order 21) as a fixed step: the coefficients at the point and
 /// the series summed at h (the step the method would take there is longer than kStep).
 struct TaylorFixedStep {
   TaylorStepper s{1e-12, 1e-12};
@@ -154,7 +154,7 @@ std::map<std::string, std::function<Steps()>> benchmarks() {
         OdeintFixedStepper<boost::numeric::odeint::runge_kutta_fehlberg78<OdeState>, 8>());
   };
   b["dop853_accepted_step"] = [] { return newtop_steps(Dop853EveryStepAccepted()); };
-  b["taylor19_step"] = [] { return newtop_steps(TaylorFixedStep()); };
+  b["taylor21_step"] = [] { return newtop_steps(TaylorFixedStep()); };
   b["odeint_runge_kutta4_peer"] = odeint_rk4_steps;
   return b;
 }

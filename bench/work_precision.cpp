@@ -8,7 +8,8 @@
 //   regimes: letters among a, b (both λ/Ω²), c (default: abc); rounds: timing rounds (default 7);
 //   data.csv: every run of the search (method, setting, steps, error, CPU s) for plotting;
 //   max_steps: fixed-step runs longer than this are not tried (default 2e7; a target a method
-//   reaches only beyond it is "not reached").
+//   reaches only beyond it is "not reached"); only: comma-separated parts of the names of the
+//   methods to run, the odeint peers always (e.g. "taylor,dop853").
 
 #include <algorithm>
 #include <cstdio>
@@ -79,6 +80,8 @@ Method newtop_adaptive(std::string label) {
           }};
 }
 
+std::string only;  // comma-separated parts of method names to run (empty: every method)
+
 std::vector<Method> methods(bool exact_allowed) {
   std::vector<Method> m;
   for (const auto& t : composition_tables()) {
@@ -101,6 +104,17 @@ std::vector<Method> methods(bool exact_allowed) {
   m.push_back(newtop_adaptive<Fehlberg78Stepper>("newtop rkf78 (odeint through newtop)"));
   m.push_back(peer<ode::runge_kutta_fehlberg78<OdeState>>("odeint rkf78 (peer)"));
   m.push_back(peer<ode::runge_kutta_dopri5<OdeState>>("odeint dopri5 (peer)"));
+  if (!only.empty()) {  // keep the methods named in `only` and the peers (the last two)
+    std::erase_if(m, [](const Method& x) {
+      if (x.name.find("(peer)") != std::string::npos) return false;
+      for (std::size_t a = 0; a < only.size();) {
+        const std::size_t b = std::min(only.find(',', a), only.size());
+        if (x.name.find(only.substr(a, b - a)) != std::string::npos) return false;
+        a = b + 1;
+      }
+      return true;
+    });
+  }
   return m;
 }
 
@@ -313,6 +327,7 @@ int main(int argc, char** argv) {
   const int rounds = argc > 2 ? std::atoi(argv[2]) : 7;
   FILE* data = argc > 3 ? std::fopen(argv[3], "w") : nullptr;
   if (argc > 4) max_steps = std::atoll(argv[4]);
+  if (argc > 5) only = argv[5];
   if (data) std::fprintf(data, "regime,metric,method,setting,steps,error,cpu_s\n");
   std::printf(
       "Work–precision (ratio: CPU time over the best odeint peer's at the same target; "

@@ -24,6 +24,14 @@ namespace {
 using Lanes = TaylorSeries::Lanes;
 constexpr int K = TaylorSeries::kMaxOrder + 1;
 
+// 1/(n + 1), n = 0..kMaxOrder − 1: the same doubles as the division, off the chain from one order
+// to the next.
+constexpr std::array<double, K> kInverse = [] {
+  std::array<double, K> a{};
+  for (int n = 0; n < K; ++n) a[static_cast<std::size_t>(n)] = 1.0 / static_cast<double>(n + 1);
+  return a;
+}();
+
 // Four lanes in one AVX2 register (x86-64 with AVX2), or in two 2-lane registers (the baseline
 // instruction set, where GCC would split a 4-lane vector through memory). The same operations on
 // the same lanes in the same order either way.
@@ -136,7 +144,7 @@ template <class L>
     Rs += Rb;
     S += Sb;
     T += Tb;
-    const double inv = 1.0 / static_cast<double>(n + 1);
+    const double inv = kInverse[static_cast<std::size_t>(n)];
     const L m_next =
         (d_spin * P + d_field * Rs + (k1 * r.w2 - k2 * r.w1) + (r.g1 * b2 - r.g2 * b1)) * inv;
     O::store(s.m[n + 1], m_next);
@@ -207,6 +215,19 @@ TaylorModel::TaylorModel(const QuadraticModel& model) {
   }
   d_spin = {I[1] - I[2], I[2] - I[0], I[0] - I[1], 0.0};
   d_field = {l * (I[2] - I[1]), l * (I[0] - I[2]), l * (I[1] - I[0]), 0.0};
+  inertia = I;
+  lambda = l;
+  set = true;
+}
+
+bool TaylorModel::of(const QuadraticModel& model) const {
+  if (!set || model.body.inertia() != inertia || model.field.lambda_ != lambda) return false;
+  const Vec3 b_vec = model.body.mass() * model.field.g * model.body.center_of_mass();
+  for (int i = 0; i < 3; ++i) {
+    const auto c = static_cast<std::size_t>(i);
+    if (k[c] != model.body.gyrostat()[i] || b[c] != b_vec[i]) return false;
+  }
+  return true;
 }
 
 void taylor_expand(const TaylorModel& model, const State& x, const Quaternion* q, int order,
@@ -220,19 +241,23 @@ void taylor_expand(const TaylorModel& model, const State& x, const Quaternion* q
 }
 
 State taylor_state(const TaylorSeries& s, double h) {
-  State x;
-  for (int i = 0; i < 3; ++i) {
-    const auto c = static_cast<std::size_t>(i);
-    double m = s.m[static_cast<std::size_t>(s.order)][c];
-    double g = s.gamma[static_cast<std::size_t>(s.order)][c];
-    for (int n = s.order - 1; n >= 0; --n) {
-      m = m * h + s.m[static_cast<std::size_t>(n)][c];
-      g = g * h + s.gamma[static_cast<std::size_t>(n)][c];
-    }
-    x.m[i] = m;
-    x.gamma[i] = g;
+  // Horner in three pairs of lanes, (m₁, m₂), (m₃, γ₁), (γ₂, γ₃): the same operations as one
+  // component at a time.
+  auto pairs = [&](int n, V2& a, V2& b, V2& c) {
+    const Lanes &m = s.m[static_cast<std::size_t>(n)], &g = s.gamma[static_cast<std::size_t>(n)];
+    a = V2{m[0], m[1]};
+    b = V2{m[2], g[0]};
+    c = V2{g[1], g[2]};
+  };
+  V2 a, b, c, ca, cb, cc;
+  pairs(s.order, a, b, c);
+  for (int n = s.order - 1; n >= 0; --n) {
+    pairs(n, ca, cb, cc);
+    a = a * h + ca;
+    b = b * h + cb;
+    c = c * h + cc;
   }
-  return x;
+  return {Vec3(a[0], a[1], b[0]), Vec3(b[1], c[0], c[1])};
 }
 
 Quaternion taylor_attitude(const TaylorSeries& s, double h) {
@@ -245,24 +270,22 @@ Quaternion taylor_attitude(const TaylorSeries& s, double h) {
 
 double taylor_step(const TaylorSeries& s, double abs_tol, double rel_tol) {
   const int p = s.order;
-  const double eps = std::max(abs_tol, rel_tol * coefficient_norm(s, 0));
-  double h = std::numeric_limits<double>::infinity();
-  bool found = false;
-  for (int n = p; n >= 1 && (!found || n >= p - 1); --n) {
+  const double log_eps = std::log(std::max(abs_tol, rel_tol * coefficient_norm(s, 0)));
+  // ln h = min over n = p − 1, p of (ln ε − ln ‖x^[n]‖)/n, less 0.7/(p − 1); if both vanish, the
+  // highest order that does not; none: a constant solution.
+  double log_h = std::numeric_limits<double>::infinity();
+  for (int n = p; n >= 1 && (n >= p - 1 || log_h == std::numeric_limits<double>::infinity()); --n) {
     const double c = coefficient_norm(s, n);
     if (std::isnan(c) || std::isinf(c)) return std::numeric_limits<double>::quiet_NaN();
-    if (c > 0.0) {
-      h = std::min(h, std::pow(eps / c, 1.0 / n));
-      found = true;
-    }
+    if (c > 0.0) log_h = std::min(log_h, (log_eps - std::log(c)) / n);
   }
-  return h * std::exp(-0.7 / (p - 1));
+  return std::exp(log_h - 0.7 / (p - 1));
 }
 
 int taylor_order(double tol) {
   const double digits = std::abs(std::log(tol));
   if (!std::isfinite(digits)) return 30;
-  return std::clamp(static_cast<int>(std::ceil(0.6 * digits)) + 2, 8, 30);
+  return std::clamp(static_cast<int>(std::ceil(0.6 * digits)) + 4, 8, 30);
 }
 
 }  // namespace detail

@@ -42,7 +42,14 @@ struct TaylorSeries {
 /// A).
 struct TaylorModel {
   alignas(32) std::array<double, 4> inv_i{}, k{}, b{}, d_spin{}, d_field{};
+  Vec3 inertia = Vec3::Zero();  // I and λ as given, for of()
+  double lambda = 0.0;
+  bool set = false;
+
+  TaylorModel() = default;
   explicit TaylorModel(const QuadraticModel& model);
+  /// Whether these are the constants of `model` (the same I, k, M g r0, λ).
+  bool of(const QuadraticModel& model) const;
 };
 
 /// Fills s with the coefficients through (m, γ) (and q when q is not null) to the given order: in
@@ -56,7 +63,7 @@ Quaternion taylor_attitude(const TaylorSeries& s, double h);
 /// The step: min over n = p − 1, p of (ε / ‖x^[n]‖∞)^(1/n), times Jorba and Zou's safety factor
 /// exp(−0.7/(p − 1)), with ε = max(abs_tol, rel_tol ‖x^[0]‖∞); +inf when the series is constant.
 double taylor_step(const TaylorSeries& s, double abs_tol, double rel_tol);
-/// The order for a tolerance: ⌈0.6 |ln tol|⌉ + 2 within [8, 30] (docs/methods.md, "Taylor").
+/// The order for a tolerance: ⌈0.6 |ln tol|⌉ + 4 within [8, 30] (docs/methods.md, "Taylor").
 int taylor_order(double tol);
 
 }  // namespace detail
@@ -131,9 +138,9 @@ class TaylorStepper {
                         : series_[cur_].attitude && q->coeffs() == at_q_.coeffs())) {
         return;
       }
-      const detail::TaylorModel p(model);
+      if (!params_.of(model)) params_ = detail::TaylorModel(model);
       cur_ = 1 - cur_;
-      detail::taylor_expand(p, x, q, order_, series_[cur_]);
+      detail::taylor_expand(params_, x, q, order_, series_[cur_]);
       at_ = x;
       if (q != nullptr) at_q_ = *q;
       expanded_ = true;
@@ -150,6 +157,7 @@ class TaylorStepper {
   bool expanded_ = false;
   State at_;
   Quaternion at_q_ = Quaternion::Identity();
+  detail::TaylorModel params_;  // the recurrences' constants of the last model
   double t0_ = 0.0, projection_ = 0.0;
 };
 
