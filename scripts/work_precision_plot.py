@@ -41,13 +41,18 @@ def read(path):
 
 
 def style(method):
-    """Peers black/grey and thick; newtop's splittings coloured by table, the split by dash."""
+    """Peers black/grey and thick, taylor red and dop853 blue; newtop's splittings coloured by
+    table, the split by dash."""
     if method.startswith("odeint rkf78"):
         return dict(color="black", lw=2.2, ls="-", marker="s")
     if method.startswith("odeint dopri5"):
         return dict(color="0.5", lw=2.2, ls="-", marker="s")
     if method.startswith("newtop rkf78"):
         return dict(color="black", lw=1.0, ls=":", marker="x")
+    if method == "newtop taylor":
+        return dict(color="tab:red", lw=2.2, ls="-", marker="o")
+    if method == "newtop dop853":
+        return dict(color="tab:blue", lw=1.8, ls="-", marker="d")
     ls = "--" if "(spin)" in method else (":" if "exact" in method else "-")
     return dict(ls=ls, lw=1.0, marker=".")
 

@@ -12,10 +12,12 @@ void add_integration_options(CLI::App& sub, std::optional<double>& t_end,
   sub.add_option("--t-end", t_end, "final time (overrides [integrate] t_end)");
   sub.add_option("--method", method,
                  "method: splitting2, splitting4, splitting4-yoshida, splitting6, splitting8, "
-                 "splitting8-mclachlan, rk4, dopri5, rkf78, dop853");
+                 "splitting8-mclachlan, rk4, dopri5, rkf78, dop853, taylor (quadratic field)");
   auto* s = sub.add_option("--step", step, "fixed step (selects splitting6 by default)");
   auto* t =
-      sub.add_option("--tol", tol, "absolute and relative tolerance (selects dop853 by default)");
+      sub.add_option("--tol", tol,
+                     "absolute and relative tolerance (selects taylor by default on the quadratic "
+                     "field, dop853 on the others and for chaos indicators)");
   s->excludes(t);
   sub.add_option("--split", split,
                  "free-body split of the splitting methods: axes, spin or exact (overrides "
@@ -40,9 +42,9 @@ void check_run_span(const io::Scenario& sc, const MethodSettings& method, double
   }
 }
 
-RunSettings resolve_run(const io::Scenario& sc, const IntegrationArgs& a) {
+RunSettings resolve_run(const io::Scenario& sc, const IntegrationArgs& a, bool tangent) {
   RunSettings r;
-  const io::IntegrateOverrides ov = a.overrides();
+  const io::IntegrateOverrides ov = a.overrides(tangent);
   r.method = io::resolve_method(sc, ov);
   r.t0 = sc.integrate.t0;
   r.t_end = io::resolve_t_end(sc, ov);

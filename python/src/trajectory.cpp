@@ -120,12 +120,14 @@ Quaternion unit_quaternion(const Eigen::Vector4d& v) {
 }
 
 /// The method as the command line resolves it: a name, or the default for a step or a tolerance.
-MethodSettings settings(const std::optional<std::string>& name, std::optional<double> step,
-                        std::optional<double> tol) {
+MethodSettings settings(const Model& model, const std::optional<std::string>& name,
+                        std::optional<double> step, std::optional<double> tol) {
   if (step && tol) throw InputError("step, tol: expected one of them, found both");
   if (!step && !tol) throw InputError("step, tol: expected a step or a tolerance, found neither");
   MethodSettings s;
-  s.name = name.value_or(std::string(step ? kDefaultFixedMethod : kDefaultAdaptiveMethod));
+  s.name = name.value_or(
+      std::string(step ? kDefaultFixedMethod
+                       : default_adaptive_method(model.kind() == FieldKind::quadratic, false)));
   if (step) s.step = *step;
   if (tol) s.abs_tol = s.rel_tol = *tol;
   validate(s);
@@ -145,15 +147,15 @@ void bind_trajectory(py::module_& m) {
         if (max_steps) o.max_steps = *max_steps;
         std::optional<Quaternion> q;
         if (quaternion) q = unit_quaternion(*quaternion);
-        return run(model, state, q, t0, t_end, settings(method, step, tol), o);
+        return run(model, state, q, t0, t_end, settings(model, method, step, tol), o);
       },
       py::arg("model"), py::arg("state"), py::arg("t_end"), py::kw_only(), py::arg("t0") = 0.0,
       py::arg("method") = py::none(), py::arg("step") = py::none(), py::arg("tol") = py::none(),
       py::arg("max_steps") = py::none(), py::arg("quaternion") = py::none(),
       "Integrates the Euler-Poisson equations (spec section 4) from (t0, state) to t_end with a "
-      "method by name (splitting2..8, rk4, dopri5, rkf78, dop853); a step selects splitting6 by "
-      "default "
-      "and a tolerance dop853. Returns a dict of numpy arrays over the accepted steps: t (N), "
+      "method by name (splitting2..8, rk4, dopri5, rkf78, dop853, taylor); a step selects "
+      "splitting6 by default and a tolerance taylor on the quadratic field, dop853 on the others. "
+      "Returns a dict of numpy arrays over the accepted steps: t (N), "
       "omega, gamma, m (N x 3), energy, area, geometric[, brun][, lagrange] (N), all views of "
       "one (N x W) array 'table'; and 'outcome', 'steps', 'rejected', 'method', 'step'. With "
       "quaternion=[w, x, y, z] (the attitude, body -> inertial, scalar first; a unit one within "

@@ -250,17 +250,19 @@ Scenario load_scenario(const std::string& path) {
 
 MethodSettings resolve_method(const Scenario& s, const IntegrateOverrides& o) {
   MethodSettings m;
+  const std::string adaptive_default(
+      default_adaptive_method(s.model.kind() == FieldKind::quadratic, o.tangent));
   const std::optional<double> step = o.step ? o.step : (o.tol ? std::nullopt : s.integrate.step);
   const std::optional<double> tol = o.tol ? o.tol : (o.step ? std::nullopt : s.integrate.tol);
   const bool named = o.method || (!o.step && !o.tol && s.integrate.method);
   if (o.method) {
     m.name = *o.method;
   } else if (o.step || o.tol) {
-    m.name = std::string(o.step ? kDefaultFixedMethod : kDefaultAdaptiveMethod);
+    m.name = o.step ? std::string(kDefaultFixedMethod) : adaptive_default;
   } else if (s.integrate.method) {
     m.name = *s.integrate.method;
   } else {
-    m.name = std::string(step ? kDefaultFixedMethod : kDefaultAdaptiveMethod);
+    m.name = step ? std::string(kDefaultFixedMethod) : adaptive_default;
   }
   const MethodInfo& info = method_info(m.name);
   const bool adaptive = info.kind == MethodKind::adaptive;
@@ -272,7 +274,7 @@ MethodSettings resolve_method(const Scenario& s, const IntegrateOverrides& o) {
     throw InputError(s.source +
                      ": [integrate]: a step or a tolerance is needed: give --step (fixed step, " +
                      std::string(kDefaultFixedMethod) + ") or --tol (adaptive, " +
-                     std::string(kDefaultAdaptiveMethod) + "), or step or tol in [integrate]");
+                     adaptive_default + "), or step or tol in [integrate]");
   }
   if (adaptive && !tol) {
     throw InputError(s.source + ": tol: method " + m.name + " is adaptive and needs a tolerance" +

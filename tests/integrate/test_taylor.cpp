@@ -235,6 +235,23 @@ TEST(Taylor, ChaosIndicatorsAreRefused) {
   EXPECT_NE(r.err.find("taylor has no tangent map"), std::string::npos) << r.err;
 }
 
+// With a tolerance and no method: taylor on the quadratic field, dop853 on an exact or multipole
+// field and for the chaos indicators (docs/performance.md, "The default method").
+TEST(Taylor, DefaultWithAToleranceFollowsTheFieldAndTheCommand) {
+  auto method_of = [](const std::string& args) {
+    const test::CliResult r = test::run_newtop(args + " --json", test::Stderr::separate);
+    EXPECT_EQ(r.code, 0) << args << ": " << r.err;
+    return r.code == 0 ? nlohmann::json::parse(r.out)["method"].get<std::string>() : "";
+  };
+  EXPECT_EQ(method_of("simulate " + test::example_path("brun.toml") + " --t-end 1 --tol 1e-10"),
+            "taylor");
+  EXPECT_EQ(method_of("simulate " + test::example_path("exact_box_multipole.toml") +
+                      " --t-end 0.5 --tol 1e-10"),
+            "dop853");
+  EXPECT_EQ(method_of("chaos " + test::example_path("brun.toml") + " --t-end 2 --tol 1e-10"),
+            "dop853");
+}
+
 TEST(Taylor, CommandLineNamesIt) {
   const std::string brun = "simulate " + test::example_path("brun.toml") + " --t-end 2 --json";
   const test::CliResult r =

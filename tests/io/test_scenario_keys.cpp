@@ -132,7 +132,7 @@ TEST(ScenarioKeys, NoStepNoToleranceNoMethod) {
                            "gamma = [0.48, -0.6, 0.64]\n[integrate]\nt_end = 1.0\n";
   const std::string tail =
       ": [integrate]: a step or a tolerance is needed: give --step (fixed step, splitting6) or "
-      "--tol (adaptive, dop853), or step or tol in [integrate]";
+      "--tol (adaptive, taylor), or step or tol in [integrate]";
   try {
     resolve_method(parse_scenario(text, "s.toml"), {});
     ADD_FAILURE() << "accepted";

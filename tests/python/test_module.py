@@ -301,3 +301,13 @@ def test_integrate_runs_dop853_as_the_command_line_does():
     # against Fehlberg 7(8) at 1e-13: both within 1e-9 of the motion over t = 3
     ref = newtop.integrate(sc, t_end=3.0, method="rkf78", tol=1e-13)
     assert np.max(np.abs(run["gamma"][-1] - ref["gamma"][-1])) < 1e-9
+
+
+def test_integrate_runs_taylor_as_the_command_line_does():
+    sc = newtop.load_scenario(example("brun.toml"))
+    run = newtop.integrate(sc, t_end=3.0, tol=1e-11)  # the default with a tolerance here
+    cli = program_json("simulate", example("brun.toml"), "--t-end", "3", "--tol", "1e-11")
+    assert run["method"] == cli["method"] == "taylor"
+    assert run["gamma"][-1].tolist() == cli["final"]["gamma"]  # the same run, bit for bit
+    ref = newtop.integrate(sc, t_end=3.0, method="rkf78", tol=1e-13)
+    assert np.max(np.abs(run["gamma"][-1] - ref["gamma"][-1])) < 1e-9
