@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "support/adaptive_checks.hpp"
 #include "support/cli.hpp"
 #include "support/problems.hpp"
 
@@ -124,22 +125,8 @@ TEST(Dop853, ObservedOrderIsEight) {
 constexpr double kTolFactor = 10.0;
 
 TEST(Dop853, ErrorFollowsTheTolerance) {
-  const QuadraticModel m = test::generic_model(Vec3(0.1, -0.2, 0.05));
-  const State x0 = test::generic_state(m);
-  constexpr double T = 10.0;
-  const State ref = test::reference_solution(m, x0, T, 1e-15);
-  double previous = 0.0;
-  for (double tol : {1e-6, 1e-8, 1e-10}) {
-    Dop853Stepper s(tol, tol);
-    const Outcome o = integrate(s, m, x0, 0.0, T, IntegrateOptions{});
-    ASSERT_EQ(o.status, Status::finished) << tol;
-    const double e = test::distance(o.state, ref);
-    EXPECT_LT(e, kTolFactor * tol) << tol;
-    if (previous > 0.0) {
-      EXPECT_GT(previous / e, 10.0) << tol << ": " << previous << " → " << e;
-    }
-    previous = e;
-  }
+  test::expect_error_follows_the_tolerance([](double tol) { return Dop853Stepper(tol, tol); },
+                                           kTolFactor);
 }
 
 // A first trial of 10 time units overflows to NaN: the stepper rejects it and shrinks the step by
@@ -164,30 +151,7 @@ TEST(Dop853, NonFiniteTrialIsRejected) {
 // (both errors ~1e-11 here; bound 1e-9), the renormalisation of q within the tolerance's size, and
 // the continuous extension of q at mid-step against the same reference.
 TEST(Dop853, CarriesTheAttitude) {
-  const QuadraticModel m = test::generic_model();
-  OrientedState x0;
-  static_cast<State&>(x0) = test::generic_state(m);
-  x0.q = Quaternion(Eigen::AngleAxisd(0.7, Vec3(0.2, -0.4, 0.9).normalized()));
-  Dop853Stepper s(1e-12, 1e-12);
-  Fehlberg78Stepper r(1e-13, 1e-13);
-  const Outcome a = integrate(s, m, x0, 0.0, 20.0, IntegrateOptions{});
-  const Outcome b = integrate(r, m, x0, 0.0, 20.0, IntegrateOptions{});
-  ASSERT_EQ(a.status, Status::finished);
-  ASSERT_TRUE(a.attitude && b.attitude);
-  EXPECT_LT(test::distance(a.state, b.state), 1e-9);
-  EXPECT_LT(a.attitude->angularDistance(*b.attitude), 1e-9);
-  EXPECT_LT(a.attitude_projection, 1e-11);
-  // A first step from x0 (trials of 0.5 shrunk until one is accepted), interpolated half way.
-  Dop853Stepper first(1e-12, 1e-12);
-  OrientedState x = x0;
-  double t = 0.0, dt = 0.5;
-  int trials = 0;
-  while (!first.try_step(m, x, t, dt)) ASSERT_LT(++trials, 20);
-  ASSERT_GT(t, 0.0);
-  const OrientedState mid = first.dense_oriented_state(m, 0.5 * t);
-  const Outcome half = integrate(r, m, x0, 0.0, 0.5 * t, IntegrateOptions{});
-  EXPECT_LT(test::distance(mid, half.state), 1e-10);
-  EXPECT_LT(mid.q.angularDistance(*half.attitude), 1e-10);
+  test::expect_carries_the_attitude([] { return Dop853Stepper(1e-12, 1e-12); });
 }
 
 TEST(Dop853, CommandLineNamesIt) {

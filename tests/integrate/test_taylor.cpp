@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "support/adaptive_checks.hpp"
 #include "support/cli.hpp"
 #include "support/problems.hpp"
 
@@ -137,50 +138,25 @@ TEST(Taylor, ObservedOrderOfAStep) {
 constexpr double kTolFactor = 10.0;
 
 TEST(Taylor, ErrorFollowsTheTolerance) {
+  test::expect_error_follows_the_tolerance([](double tol) { return TaylorStepper(tol, tol); },
+                                           kTolFactor);
+}
+
+// Every step is accepted: the step comes from the coefficients, it is never tried.
+TEST(Taylor, StepsAreNeverRejected) {
   const QuadraticModel m = test::generic_model(Vec3(0.1, -0.2, 0.05));
-  const State x0 = test::generic_state(m);
-  constexpr double T = 10.0;
-  const State ref = test::reference_solution(m, x0, T, 1e-15);
-  double previous = 0.0;
-  for (double tol : {1e-6, 1e-8, 1e-10}) {
-    TaylorStepper s(tol, tol);
-    const Outcome o = integrate(s, m, x0, 0.0, T, IntegrateOptions{});
-    ASSERT_EQ(o.status, Status::finished) << tol;
-    EXPECT_EQ(o.rejected, 0) << tol;
-    const double e = test::distance(o.state, ref);
-    EXPECT_LT(e, kTolFactor * tol) << tol;
-    if (previous > 0.0) {
-      EXPECT_GT(previous / e, 10.0) << tol << ": " << previous << " → " << e;
-    }
-    previous = e;
-  }
+  TaylorStepper s(1e-10, 1e-10);
+  const Outcome o = integrate(s, m, test::generic_state(m), 0.0, 10.0, IntegrateOptions{});
+  ASSERT_EQ(o.status, Status::finished);
+  EXPECT_EQ(o.rejected, 0);
+  EXPECT_GT(o.steps, 10);
 }
 
 // With an attitude: the state and q against Fehlberg 7(8) with an attitude at 1e-13 over T = 20
 // (bound 1e-9, as for Dormand–Prince 8(5,3)), the renormalisation of q within the tolerance's
 // size, and the series of a first step at mid-step against the same reference.
 TEST(Taylor, CarriesTheAttitude) {
-  const QuadraticModel m = test::generic_model();
-  const OrientedState x0 = generic_oriented(m);
-  TaylorStepper s(1e-12, 1e-12);
-  Fehlberg78Stepper r(1e-13, 1e-13);
-  const Outcome a = integrate(s, m, x0, 0.0, 20.0, IntegrateOptions{});
-  const Outcome b = integrate(r, m, x0, 0.0, 20.0, IntegrateOptions{});
-  ASSERT_EQ(a.status, Status::finished);
-  ASSERT_TRUE(a.attitude && b.attitude);
-  EXPECT_LT(test::distance(a.state, b.state), 1e-9);
-  EXPECT_LT(a.attitude->angularDistance(*b.attitude), 1e-9);
-  EXPECT_LT(a.attitude_projection, 1e-11);
-  EXPECT_GT(a.attitude_projection, 0.0);
-  TaylorStepper first(1e-12, 1e-12);
-  OrientedState x = x0;
-  double t = 0.0, dt = first.initial_step(m, x, 0.0, 20.0);
-  ASSERT_TRUE(first.try_step(m, x, t, dt));
-  ASSERT_GT(t, 0.0);
-  const OrientedState mid = first.dense_oriented_state(m, 0.5 * t);
-  const Outcome half = integrate(r, m, x0, 0.0, 0.5 * t, IntegrateOptions{});
-  EXPECT_LT(test::distance(mid, half.state), 1e-10);
-  EXPECT_LT(mid.q.angularDistance(*half.attitude), 1e-10);
+  test::expect_carries_the_attitude([] { return TaylorStepper(1e-12, 1e-12); });
 }
 
 // An equilibrium (at rest, γ along the axis of least moment of a gravity gradient, r0 = 0): every
