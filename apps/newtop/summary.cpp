@@ -1,9 +1,11 @@
 #include "summary.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <iomanip>
 
 #include "integration_options.hpp"
+#include "newtop/integrate/taylor.hpp"
 
 namespace newtop::app {
 namespace {
@@ -120,6 +122,9 @@ io::Json simulation_json(const SimulationReport& r) {
   const MethodInfo& info = method_info(r.method.name);
   if (info.kind == MethodKind::adaptive) {
     j["tolerance"] = {{"abs", r.method.abs_tol}, {"rel", r.method.rel_tol}};
+    if (r.method.name == "taylor") {
+      j["order"] = detail::taylor_order(std::min(r.method.abs_tol, r.method.rel_tol));
+    }
   } else {
     j["step"] = r.method.step;
   }
@@ -164,6 +169,10 @@ void print_simulation_summary(std::ostream& os, const SimulationReport& r) {
   os << "method    " << r.method.name;
   if (method_info(r.method.name).kind == MethodKind::adaptive) {
     os << "  tol = " << fmt(r.method.abs_tol, 3);
+    if (r.method.name == "taylor") {
+      os << "  (order " << detail::taylor_order(std::min(r.method.abs_tol, r.method.rel_tol))
+         << ")";
+    }
   } else {
     os << "  step = " << fmt(r.method.step);
   }

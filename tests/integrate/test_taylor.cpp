@@ -235,6 +235,7 @@ TEST(Taylor, CommandLineNamesIt) {
   ASSERT_EQ(r.code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["method"], "taylor");
+  EXPECT_EQ(j["order"], 20);  // ⌈0.6 |ln 1e-11|⌉ + 4
   EXPECT_EQ(j["rejected_steps"], 0);
   const test::CliResult rk =
       test::run_newtop(brun + " --tol 1e-13 --method rkf78", test::Stderr::separate);
