@@ -5,13 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "support/adaptive_checks.hpp"
-#include "support/cli.hpp"
 #include "support/problems.hpp"
 
 namespace newtop {
@@ -154,23 +152,7 @@ TEST(Dop853, CarriesTheAttitude) {
   test::expect_carries_the_attitude([] { return Dop853Stepper(1e-12, 1e-12); });
 }
 
-TEST(Dop853, CommandLineNamesIt) {
-  const std::string brun = "simulate " + test::example_path("brun.toml") + " --t-end 2 --json";
-  const test::CliResult r =
-      test::run_newtop(brun + " --tol 1e-11 --method dop853", test::Stderr::separate);
-  ASSERT_EQ(r.code, 0) << r.err;
-  const nlohmann::json j = nlohmann::json::parse(r.out);
-  EXPECT_EQ(j["method"], "dop853");
-  const test::CliResult rk =
-      test::run_newtop(brun + " --tol 1e-13 --method rkf78", test::Stderr::separate);
-  ASSERT_EQ(rk.code, 0) << rk.err;
-  const nlohmann::json k = nlohmann::json::parse(rk.out);
-  for (const char* v : {"m", "gamma"}) {
-    for (int i = 0; i < 3; ++i) {
-      EXPECT_NEAR(j["final"][v][i].get<double>(), k["final"][v][i].get<double>(), 1e-9) << v;
-    }
-  }
-}
+TEST(Dop853, CommandLineNamesIt) { test::expect_command_line_runs("dop853"); }
 
 }  // namespace
 }  // namespace newtop

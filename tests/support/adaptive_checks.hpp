@@ -1,12 +1,16 @@
 #pragma once
 // Checks shared by the tests of newtop's own adaptive methods (dop853, taylor): the error control
-// against a reference near round-off, and a run with an attitude against Fehlberg 7(8).
+// against a reference near round-off, a run with an attitude against Fehlberg 7(8), and the
+// command line that names the method.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
+#include "support/cli.hpp"
 #include "support/problems.hpp"
 
 namespace newtop::test {
@@ -67,6 +71,25 @@ void expect_carries_the_attitude(Make make) {
   const Outcome half = integrate(r, m, x0, 0.0, 0.5 * t, IntegrateOptions{});
   EXPECT_LT(distance(mid, half.state), 1e-10);
   EXPECT_LT(mid.q.angularDistance(*half.attitude), 1e-10);
+}
+
+/// `newtop simulate examples/brun.toml --t-end 2 --tol 1e-11 --method <method> --json`: its final
+/// state against Fehlberg 7(8) at 1e-13 from the same command (within 1e-9); returns its JSON.
+inline nlohmann::json expect_command_line_runs(const std::string& method) {
+  const std::string brun = "simulate " + example_path("brun.toml") + " --t-end 2 --json";
+  const CliResult r = run_newtop(brun + " --tol 1e-11 --method " + method, Stderr::separate);
+  EXPECT_EQ(r.code, 0) << r.err;
+  const CliResult rk = run_newtop(brun + " --tol 1e-13 --method rkf78", Stderr::separate);
+  EXPECT_EQ(rk.code, 0) << rk.err;
+  if (r.code != 0 || rk.code != 0) return {};
+  const nlohmann::json j = nlohmann::json::parse(r.out), k = nlohmann::json::parse(rk.out);
+  EXPECT_EQ(j["method"], method);
+  for (const char* v : {"m", "gamma"}) {
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(j["final"][v][i].get<double>(), k["final"][v][i].get<double>(), 1e-9) << v;
+    }
+  }
+  return j;
 }
 
 }  // namespace newtop::test

@@ -122,9 +122,6 @@ class TaylorStepper {
   /// The largest renormalisation |‖q‖ − 1| of the attitude in one step so far.
   double attitude_projection() const { return projection_; }
 
-  /// The coefficients through the current point (after initial_step or try_step).
-  const detail::TaylorSeries& series() const { return series_[cur_]; }
-
  private:
   template <Field F, PhaseState X>
   void expand_at(const BasicModel<F>& model, const X& x) {
