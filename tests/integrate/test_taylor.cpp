@@ -174,6 +174,22 @@ TEST(Taylor, ConstantSolutionIsOneStep) {
   EXPECT_EQ(o.state, x0);
 }
 
+// One stepper, two models at the same point: a step of the second is of the second model (the
+// series at hand is kept only for the same point of the same model).
+TEST(Taylor, AStepperReusedOnAnotherModelExpandsAgain) {
+  const QuadraticModel a = test::generic_model();
+  QuadraticModel b = a;
+  b.field.lambda_ = 2.0;
+  const State x0 = test::generic_state(a);
+  TaylorStepper s(1e-12, 1e-12), fresh(1e-12, 1e-12);
+  s.initial_step(a, x0, 0.0, 1.0);  // the series of a through x0 is at hand
+  State xb = x0, xf = x0;
+  double tb = 0.0, tf = 0.0, db = 0.1, df = 0.1;
+  ASSERT_TRUE(s.try_step(b, xb, tb, db));
+  ASSERT_TRUE(fresh.try_step(b, xf, tf, df));
+  EXPECT_EQ(xb, xf);
+}
+
 // The order follows the tolerance (docs/methods.md): ⌈0.6 |ln tol|⌉ + 4 within [8, 30].
 TEST(Taylor, OrderFollowsTheTolerance) {
   EXPECT_EQ(TaylorStepper(1e-6, 1e-6).order(), 13);

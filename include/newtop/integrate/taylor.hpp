@@ -130,12 +130,13 @@ class TaylorStepper {
     } else {
       const Quaternion* q = nullptr;
       if constexpr (kOriented<X>) q = &x.q;
-      if (expanded_ && x.m == at_.m && x.gamma == at_.gamma &&
+      const bool same_model = params_.of(model);
+      if (expanded_ && same_model && x.m == at_.m && x.gamma == at_.gamma &&
           (q == nullptr ? !series_[cur_].attitude
                         : series_[cur_].attitude && q->coeffs() == at_q_.coeffs())) {
-        return;
+        return;  // the series through this point of this model is at hand
       }
-      if (!params_.of(model)) params_ = detail::TaylorModel(model);
+      if (!same_model) params_ = detail::TaylorModel(model);
       cur_ = 1 - cur_;
       detail::taylor_expand(params_, x, q, order_, series_[cur_]);
       at_ = x;
