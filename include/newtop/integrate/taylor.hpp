@@ -85,13 +85,13 @@ class TaylorStepper {
   template <Field F, PhaseState X>
   double initial_step(const BasicModel<F>& model, const X& x, double, double) {
     expand_at(model, x);
-    return detail::taylor_step(series_[cur_], abs_tol_, rel_tol_);
+    return step_;
   }
 
   template <Field F, PhaseState X>
   bool try_step(const BasicModel<F>& model, X& x, double& t, double& dt) {
     expand_at(model, x);
-    const double h_max = detail::taylor_step(series_[cur_], abs_tol_, rel_tol_);
+    const double h_max = step_;
     if (!(h_max > 0.0)) {  // NaN: the series is not finite
       dt *= kNonFiniteShrink;
       return false;
@@ -101,8 +101,7 @@ class TaylorStepper {
     t0_ = t;
     t += h;
     expand_at(model, x);
-    const double next = detail::taylor_step(series_[cur_], abs_tol_, rel_tol_);
-    dt = h < 0 ? -next : next;
+    dt = h < 0 ? -step_ : step_;
     return true;
   }
 
@@ -139,6 +138,7 @@ class TaylorStepper {
       if (!same_model) params_ = detail::TaylorModel(model);
       cur_ = 1 - cur_;
       detail::taylor_expand(params_, x, q, order_, series_[cur_]);
+      step_ = detail::taylor_step(series_[cur_], abs_tol_, rel_tol_);
       at_ = x;
       if (q != nullptr) at_q_ = *q;
       expanded_ = true;
@@ -156,6 +156,7 @@ class TaylorStepper {
   State at_;
   Quaternion at_q_ = Quaternion::Identity();
   detail::TaylorModel params_;  // the recurrences' constants of the last model
+  double step_ = 0.0;           // taylor_step of series_[cur_]
   double t0_ = 0.0, projection_ = 0.0;
 };
 
