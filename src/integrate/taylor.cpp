@@ -12,6 +12,7 @@
 #include "newtop/integrate/taylor.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -118,37 +119,47 @@ template <class L>
   for (int n = 0; n < order; ++n) {
     Rotated& r = R[n];
     r = {O::rot1(W[n]), O::rot2(W[n]), O::rot1(G), O::rot2(G)};
-    // Σ_j ω₂ω₃ (P), γ₂γ₃ (Rs), γ₂ω₃ and γ₃ω₂ (S, T), cyclic in the lanes; two interleaved halves
-    // (even and odd j) shorten the chains of additions.
+    // Σ_j ω₂ω₃ (P), γ₂γ₃ (Rs), γ₂ω₃ and γ₃ω₂ (S, T), cyclic in the lanes, the terms j and n − j
+    // together (the four coefficients loaded once for the two): the pairs 0 < j < n − j first, in
+    // two interleaved halves to shorten the chains of additions, then j = n/2 (n even), then the
+    // pair that holds the newest coefficient (j = 0, n), so that only it waits for it.
     L P{}, Rs{}, S{}, T{}, Pb{}, Rb{}, Sb{}, Tb{};
-    int j = 0;
-    for (; j + 1 <= n; j += 2) {
-      const Rotated &a = R[j], &c = R[n - j], &a1 = R[j + 1], &c1 = R[n - j - 1];
-      P += a.w1 * c.w2;
-      Rs += a.g1 * c.g2;
-      S += a.g1 * c.w2;
-      T += a.g2 * c.w1;
-      Pb += a1.w1 * c1.w2;
-      Rb += a1.g1 * c1.g2;
-      Sb += a1.g1 * c1.w2;
-      Tb += a1.g2 * c1.w1;
+    auto pair = [](const Rotated& a, const Rotated& c, L& sum_p, L& rs, L& sum_s, L& sum_t) {
+      sum_p += a.w1 * c.w2 + c.w1 * a.w2;
+      rs += a.g1 * c.g2 + c.g1 * a.g2;
+      sum_s += a.g1 * c.w2 + c.g1 * a.w2;
+      sum_t += a.g2 * c.w1 + c.g2 * a.w1;
+    };
+    auto single = [](const Rotated& a, L& sum_p, L& rs, L& sum_s, L& sum_t) {
+      sum_p += a.w1 * a.w2;
+      rs += a.g1 * a.g2;
+      sum_s += a.g1 * a.w2;
+      sum_t += a.g2 * a.w1;
+    };
+    const int last_pair = (n - 1) / 2;
+    int j = 1;
+    for (; j + 1 <= last_pair; j += 2) {
+      pair(R[j], R[n - j], P, Rs, S, T);
+      pair(R[j + 1], R[n - j - 1], Pb, Rb, Sb, Tb);
     }
-    if (j == n) {
-      const Rotated &a = R[n], &c = R[0];
-      P += a.w1 * c.w2;
-      Rs += a.g1 * c.g2;
-      S += a.g1 * c.w2;
-      T += a.g2 * c.w1;
-    }
+    if (j == last_pair) pair(R[j], R[n - j], P, Rs, S, T);
+    if (n % 2 == 0 && n > 0) single(R[n / 2], Pb, Rb, Sb, Tb);
     P += Pb;
     Rs += Rb;
     S += Sb;
     T += Tb;
+    if (n == 0) {
+      single(r, P, Rs, S, T);
+    } else {
+      pair(R[0], r, P, Rs, S, T);
+    }
     const double inv = kInverse[static_cast<std::size_t>(n)];
-    const L m_next =
-        (d_spin * P + d_field * Rs + (k1 * r.w2 - k2 * r.w1) + (r.g1 * b2 - r.g2 * b1)) * inv;
-    O::store(s.m[n + 1], m_next);
-    W[n + 1] = m_next * inv_i;
+    // m^[n+1] and ω^[n+1] = I⁻¹ m^[n+1] formed side by side (the factors of P and Rs off the
+    // chain from one order to the next).
+    const L linear = (k1 * r.w2 - k2 * r.w1) + (r.g1 * b2 - r.g2 * b1);
+    O::store(s.m[n + 1], (d_spin * P + d_field * Rs + linear) * inv);
+    const L to_w = inv_i * inv;
+    W[n + 1] = (d_spin * to_w) * P + (d_field * to_w) * Rs + linear * to_w;
     G = (S - T) * inv;
     O::store(s.gamma[n + 1], G);
     if (s.attitude) {
@@ -156,13 +167,17 @@ template <class L>
       Q1[n] = O::rot1(Q[n]);
       Q2[n] = O::rot2(Q[n]);
       Qw[n] = O::splat3(O::lane(Q[n], 3));
+      // Σ_i q^[i] ⊗ (0, ω^[n−i]): i = 1..n − 1 first, the newest coefficients (i = 0, n) last.
       L A{}, X{}, Y{}, D{};
-      for (int i = 0; i <= n; ++i) {
+      auto add = [&](int i) {
         A += Qw[i] * W[n - i];
         X += Q1[i] * R[n - i].w2;
         Y += Q2[i] * R[n - i].w1;
         D += Q[i] * W[n - i];
-      }
+      };
+      for (int i = 1; i < n; ++i) add(i);
+      add(0);
+      if (n > 0) add(n);
       L q_next = (A + X - Y) * (0.5 * inv);
       O::set_w(q_next, -(O::lane(D, 0) + O::lane(D, 1) + O::lane(D, 2)) * (0.5 * inv));
       Q[n + 1] = q_next;
@@ -241,31 +256,47 @@ void taylor_expand(const TaylorModel& model, const State& x, const Quaternion* q
 }
 
 State taylor_state(const TaylorSeries& s, double h) {
-  // Horner in three pairs of lanes, (m₁, m₂), (m₃, γ₁), (γ₂, γ₃): the same operations as one
-  // component at a time.
-  auto pairs = [&](int n, V2& a, V2& b, V2& c) {
-    const Lanes &m = s.m[static_cast<std::size_t>(n)], &g = s.gamma[static_cast<std::size_t>(n)];
-    a = V2{m[0], m[1]};
-    b = V2{m[2], g[0]};
-    c = V2{g[1], g[2]};
+  // Horner in h² over the even and over the odd coefficients (two chains of half the length),
+  // in three pairs of lanes, (m₁, m₂), (m₃, γ₁), (γ₂, γ₃).
+  struct Six {
+    V2 a, b, c;
   };
-  V2 a, b, c, ca, cb, cc;
-  pairs(s.order, a, b, c);
-  for (int n = s.order - 1; n >= 0; --n) {
-    pairs(n, ca, cb, cc);
-    a = a * h + ca;
-    b = b * h + cb;
-    c = c * h + cc;
-  }
+  auto coefficient = [&](int n) {
+    const Lanes &m = s.m[static_cast<std::size_t>(n)], &g = s.gamma[static_cast<std::size_t>(n)];
+    return Six{V2{m[0], m[1]}, V2{m[2], g[0]}, V2{g[1], g[2]}};
+  };
+  const double h2 = h * h;
+  auto horner = [&](int top) {
+    Six x = coefficient(top);
+    for (int n = top - 2; n >= 0; n -= 2) {
+      const Six c = coefficient(n);
+      x = {x.a * h2 + c.a, x.b * h2 + c.b, x.c * h2 + c.c};
+    }
+    return x;
+  };
+  const int odd = s.order % 2;  // the highest order is odd
+  const Six even = horner(s.order - odd), other = horner(s.order - 1 + odd);
+  const V2 a = even.a + other.a * h, b = even.b + other.b * h, c = even.c + other.c * h;
   return {Vec3(a[0], a[1], b[0]), Vec3(b[1], c[0], c[1])};
 }
 
 Quaternion taylor_attitude(const TaylorSeries& s, double h) {
-  Lanes r = s.q[static_cast<std::size_t>(s.order)];
-  for (int n = s.order - 1; n >= 0; --n) {
-    for (std::size_t c = 0; c < 4; ++c) r[c] = r[c] * h + s.q[static_cast<std::size_t>(n)][c];
-  }
-  return Quaternion(r[3], r[0], r[1], r[2]);
+  // As taylor_state: Horner in h² over the even and the odd coefficients, (x, y) and (z, w).
+  const double h2 = h * h;
+  auto horner = [&](int top) {
+    const Lanes& q = s.q[static_cast<std::size_t>(top)];
+    V2 lo{q[0], q[1]}, hi{q[2], q[3]};
+    for (int n = top - 2; n >= 0; n -= 2) {
+      const Lanes& c = s.q[static_cast<std::size_t>(n)];
+      lo = lo * h2 + V2{c[0], c[1]};
+      hi = hi * h2 + V2{c[2], c[3]};
+    }
+    return std::array<V2, 2>{lo, hi};
+  };
+  const int odd = s.order % 2;
+  const auto even = horner(s.order - odd), other = horner(s.order - 1 + odd);
+  const V2 lo = even[0] + other[0] * h, hi = even[1] + other[1] * h;
+  return Quaternion(hi[1], lo[0], lo[1], hi[0]);
 }
 
 double taylor_step(const TaylorSeries& s, double abs_tol, double rel_tol) {
