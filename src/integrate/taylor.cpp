@@ -18,88 +18,13 @@
 #include <limits>
 #include <string>
 
+#include "taylor_lanes.hpp"
+
 namespace newtop {
 namespace detail {
 namespace {
 
-using Lanes = TaylorSeries::Lanes;
-constexpr int K = TaylorSeries::kMaxOrder + 1;
-
-// 1/(n + 1), n = 0..kMaxOrder − 1: the same doubles as the division, off the chain from one order
-// to the next.
-constexpr std::array<double, K> kInverse = [] {
-  std::array<double, K> a{};
-  for (int n = 0; n < K; ++n) a[static_cast<std::size_t>(n)] = 1.0 / static_cast<double>(n + 1);
-  return a;
-}();
-
-// Four lanes in one AVX2 register (x86-64 with AVX2), or in two 2-lane registers (the baseline
-// instruction set, where GCC would split a 4-lane vector through memory). The same operations on
-// the same lanes in the same order either way.
-using V4 = double __attribute__((vector_size(32)));
-using V2 = double __attribute__((vector_size(16)));
-
-struct Pair4 {
-  V2 lo, hi;  // (x, y), (z, w)
-};
-[[gnu::always_inline]] inline Pair4 operator+(const Pair4& a, const Pair4& b) {
-  return {a.lo + b.lo, a.hi + b.hi};
-}
-[[gnu::always_inline]] inline Pair4 operator-(const Pair4& a, const Pair4& b) {
-  return {a.lo - b.lo, a.hi - b.hi};
-}
-[[gnu::always_inline]] inline Pair4 operator*(const Pair4& a, const Pair4& b) {
-  return {a.lo * b.lo, a.hi * b.hi};
-}
-[[gnu::always_inline]] inline Pair4 operator*(const Pair4& a, double s) {
-  return {a.lo * s, a.hi * s};
-}
-[[gnu::always_inline]] inline Pair4& operator+=(Pair4& a, const Pair4& b) { return a = a + b; }
-
-template <class L>
-struct LaneOps;
-
-template <>
-struct LaneOps<V4> {
-  [[gnu::always_inline]] static V4 load(const Lanes& a) {
-    V4 v;
-    std::memcpy(&v, a.data(), sizeof v);
-    return v;
-  }
-  [[gnu::always_inline]] static void store(Lanes& a, const V4& v) {
-    std::memcpy(a.data(), &v, sizeof v);
-  }
-  [[gnu::always_inline]] static V4 rot1(const V4& a) {
-    return __builtin_shufflevector(a, a, 1, 2, 0, 3);
-  }  // (y, z, x, w)
-  [[gnu::always_inline]] static V4 rot2(const V4& a) {
-    return __builtin_shufflevector(a, a, 2, 0, 1, 3);
-  }  // (z, x, y, w)
-  [[gnu::always_inline]] static double lane(const V4& a, int i) { return a[i]; }
-  [[gnu::always_inline]] static void set_w(V4& a, double w) { a[3] = w; }
-  [[gnu::always_inline]] static V4 splat3(double w) { return V4{w, w, w, 0.0}; }
-};
-
-template <>
-struct LaneOps<Pair4> {
-  [[gnu::always_inline]] static Pair4 load(const Lanes& a) {
-    return {V2{a[0], a[1]}, V2{a[2], a[3]}};
-  }
-  [[gnu::always_inline]] static void store(Lanes& a, const Pair4& v) {
-    a = {v.lo[0], v.lo[1], v.hi[0], v.hi[1]};
-  }
-  [[gnu::always_inline]] static Pair4 rot1(const Pair4& a) {
-    return {__builtin_shufflevector(a.lo, a.hi, 1, 2), __builtin_shufflevector(a.lo, a.hi, 0, 3)};
-  }
-  [[gnu::always_inline]] static Pair4 rot2(const Pair4& a) {
-    return {__builtin_shufflevector(a.lo, a.hi, 2, 0), __builtin_shufflevector(a.lo, a.hi, 1, 3)};
-  }
-  [[gnu::always_inline]] static double lane(const Pair4& a, int i) {
-    return i < 2 ? a.lo[i] : a.hi[i - 2];
-  }
-  [[gnu::always_inline]] static void set_w(Pair4& a, double w) { a.hi[1] = w; }
-  [[gnu::always_inline]] static Pair4 splat3(double w) { return {V2{w, w}, V2{w, 0.0}}; }
-};
+using namespace taylor_lanes;
 
 // The coefficients 1..order from those of order 0 in s, in lanes of type L.
 template <class L>
@@ -200,17 +125,6 @@ void expand_kernel(const TaylorModel& p, int order, TaylorSeries& s, bool baseli
   expand_lanes<Pair4>(p, order, s);
 }
 
-double norm_inf(const Lanes& a, int lanes) {
-  double n = 0.0;
-  for (int i = 0; i < lanes; ++i) {
-    const double v = std::abs(a[static_cast<std::size_t>(i)]);
-    if (!(v <= n)) n = v;  // NaN propagates
-  }
-  return n;
-}
-
-double nan_max(double a, double b) { return a >= b || std::isnan(a) ? a : b; }
-
 double coefficient_norm(const TaylorSeries& s, int n) {
   const auto i = static_cast<std::size_t>(n);
   const double r = nan_max(norm_inf(s.m[i], 3), norm_inf(s.gamma[i], 3));
@@ -256,28 +170,7 @@ void taylor_expand(const TaylorModel& model, const State& x, const Quaternion* q
 }
 
 State taylor_state(const TaylorSeries& s, double h) {
-  // Horner in h² over the even and over the odd coefficients (two chains of half the length),
-  // in three pairs of lanes, (m₁, m₂), (m₃, γ₁), (γ₂, γ₃).
-  struct Six {
-    V2 a, b, c;
-  };
-  auto coefficient = [&](int n) {
-    const Lanes &m = s.m[static_cast<std::size_t>(n)], &g = s.gamma[static_cast<std::size_t>(n)];
-    return Six{V2{m[0], m[1]}, V2{m[2], g[0]}, V2{g[1], g[2]}};
-  };
-  const double h2 = h * h;
-  auto horner = [&](int top) {
-    Six x = coefficient(top);
-    for (int n = top - 2; n >= 0; n -= 2) {
-      const Six c = coefficient(n);
-      x = {x.a * h2 + c.a, x.b * h2 + c.b, x.c * h2 + c.c};
-    }
-    return x;
-  };
-  const int odd = s.order % 2;  // the highest order is odd
-  const Six even = horner(s.order - odd), other = horner(s.order - 1 + odd);
-  const V2 a = even.a + other.a * h, b = even.b + other.b * h, c = even.c + other.c * h;
-  return {Vec3(a[0], a[1], b[0]), Vec3(b[1], c[0], c[1])};
+  return taylor_lanes::sum_series(s.m.data(), s.gamma.data(), s.order, h);
 }
 
 Quaternion taylor_attitude(const TaylorSeries& s, double h) {
@@ -300,17 +193,8 @@ Quaternion taylor_attitude(const TaylorSeries& s, double h) {
 }
 
 double taylor_step(const TaylorSeries& s, double abs_tol, double rel_tol) {
-  const int p = s.order;
-  const double log_eps = std::log(std::max(abs_tol, rel_tol * coefficient_norm(s, 0)));
-  // ln h = min over n = p − 1, p of (ln ε − ln ‖x^[n]‖)/n, less 0.7/(p − 1); if both vanish, the
-  // highest order that does not; none: a constant solution.
-  double log_h = std::numeric_limits<double>::infinity();
-  for (int n = p; n >= 1 && (n >= p - 1 || log_h == std::numeric_limits<double>::infinity()); --n) {
-    const double c = coefficient_norm(s, n);
-    if (std::isnan(c) || std::isinf(c)) return std::numeric_limits<double>::quiet_NaN();
-    if (c > 0.0) log_h = std::min(log_h, (log_eps - std::log(c)) / n);
-  }
-  return std::exp(log_h - 0.7 / (p - 1));
+  return taylor_lanes::step_from_norms(
+      s.order, [&](int n) { return coefficient_norm(s, n); }, abs_tol, rel_tol);
 }
 
 int taylor_order(double tol) {
@@ -320,6 +204,35 @@ int taylor_order(double tol) {
 }
 
 }  // namespace detail
+
+namespace detail::taylor_lanes {
+
+State sum_series(const Lanes* m_n, const Lanes* gamma_n, int order, double h) {
+  // Horner in h² over the even and over the odd coefficients (two chains of half the length),
+  // in three pairs of lanes, (m₁, m₂), (m₃, γ₁), (γ₂, γ₃).
+  struct Six {
+    V2 a, b, c;
+  };
+  auto coefficient = [&](int n) {
+    const Lanes &m = m_n[n], &g = gamma_n[n];
+    return Six{V2{m[0], m[1]}, V2{m[2], g[0]}, V2{g[1], g[2]}};
+  };
+  const double h2 = h * h;
+  auto horner = [&](int top) {
+    Six x = coefficient(top);
+    for (int n = top - 2; n >= 0; n -= 2) {
+      const Six c = coefficient(n);
+      x = {x.a * h2 + c.a, x.b * h2 + c.b, x.c * h2 + c.c};
+    }
+    return x;
+  };
+  const int odd = order % 2;  // the highest order is odd
+  const Six even = horner(order - odd), other = horner(order - 1 + odd);
+  const V2 a = even.a + other.a * h, b = even.b + other.b * h, c = even.c + other.c * h;
+  return {Vec3(a[0], a[1], b[0]), Vec3(b[1], c[0], c[1])};
+}
+
+}  // namespace detail::taylor_lanes
 
 TaylorStepper::TaylorStepper(double abs_tol, double rel_tol, int order)
     : abs_tol_(abs_tol),
