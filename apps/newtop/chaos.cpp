@@ -40,7 +40,7 @@ void write_row(std::ostream& os, const phase::ChaosSample& s) {
 
 int run(const ChaosArgs& a) {
   const io::Scenario sc = load_body_scenario(a.scenario);
-  const RunSettings run = resolve_run(sc, a.integration, true);
+  const RunSettings run = resolve_run(sc, a.integration);
   phase::check_tangent_method(run.method);
   std::unique_ptr<io::AtomicFile> file;
   if (a.out) {

@@ -17,7 +17,7 @@ void add_integration_options(CLI::App& sub, std::optional<double>& t_end,
   auto* t =
       sub.add_option("--tol", tol,
                      "absolute and relative tolerance (selects taylor by default on the quadratic "
-                     "field, dop853 on the others and for chaos indicators)");
+                     "field, dop853 on the others)");
   s->excludes(t);
   sub.add_option("--split", split,
                  "free-body split of the splitting methods: axes, spin or exact (overrides "
@@ -42,9 +42,9 @@ void check_run_span(const io::Scenario& sc, const MethodSettings& method, double
   }
 }
 
-RunSettings resolve_run(const io::Scenario& sc, const IntegrationArgs& a, bool tangent) {
+RunSettings resolve_run(const io::Scenario& sc, const IntegrationArgs& a) {
   RunSettings r;
-  const io::IntegrateOverrides ov = a.overrides(tangent);
+  const io::IntegrateOverrides ov = a.overrides();
   r.method = io::resolve_method(sc, ov);
   r.t0 = sc.integrate.t0;
   r.t_end = io::resolve_t_end(sc, ov);

@@ -15,9 +15,7 @@ namespace newtop::app {
 struct IntegrationArgs {
   std::optional<double> t_end, step, tol;
   std::optional<std::string> method, split;
-  io::IntegrateOverrides overrides(bool tangent = false) const {
-    return {method, step, tol, t_end, split, tangent};
-  }
+  io::IntegrateOverrides overrides() const { return {method, step, tol, t_end, split}; }
 };
 
 /// Adds --t-end, --method, --step, --tol (--step excludes --tol) and --split.
@@ -48,7 +46,6 @@ struct RunSettings {
 io::Scenario load_body_scenario(const std::string& path);
 
 /// resolve_method, resolve_t_end and check_run_span, as `simulate` does them.
-/// tangent: the run integrates a tangent map (`chaos`), which the default adaptive method then has.
-RunSettings resolve_run(const io::Scenario& sc, const IntegrationArgs& a, bool tangent = false);
+RunSettings resolve_run(const io::Scenario& sc, const IntegrationArgs& a);
 
 }  // namespace newtop::app

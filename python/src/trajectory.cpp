@@ -125,9 +125,8 @@ MethodSettings settings(const Model& model, const std::optional<std::string>& na
   if (step && tol) throw InputError("step, tol: expected one of them, found both");
   if (!step && !tol) throw InputError("step, tol: expected a step or a tolerance, found neither");
   MethodSettings s;
-  s.name = name.value_or(
-      std::string(step ? kDefaultFixedMethod
-                       : default_adaptive_method(model.kind() == FieldKind::quadratic, false)));
+  s.name = name.value_or(std::string(
+      step ? kDefaultFixedMethod : default_adaptive_method(model.kind() == FieldKind::quadratic)));
   if (step) s.step = *step;
   if (tol) s.abs_tol = s.rel_tol = *tol;
   validate(s);

@@ -251,7 +251,7 @@ Scenario load_scenario(const std::string& path) {
 MethodSettings resolve_method(const Scenario& s, const IntegrateOverrides& o) {
   MethodSettings m;
   const std::string adaptive_default(
-      default_adaptive_method(s.model.kind() == FieldKind::quadratic, o.tangent));
+      default_adaptive_method(s.model.kind() == FieldKind::quadratic));
   const std::optional<double> step = o.step ? o.step : (o.tol ? std::nullopt : s.integrate.step);
   const std::optional<double> tol = o.tol ? o.tol : (o.step ? std::nullopt : s.integrate.tol);
   const bool named = o.method || (!o.step && !o.tol && s.integrate.method);

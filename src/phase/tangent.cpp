@@ -110,7 +110,6 @@ void check_ensemble_tangent_split(FreeBodySplit split) {
 
 void check_tangent_method(const MethodSettings& settings) {
   validate(settings);
-  if (settings.name == "taylor") throw InputError(kTaylorNoTangent);
   if (method_info(settings.name).kind == MethodKind::splitting) {
     check_tangent_split(free_body_split(settings));
   }

@@ -121,12 +121,6 @@ void read_integrate(io::TableReader& top, SweepFile& s) {
   s.integrate.t_end = r.optional_number("t_end");
   if (s.integrate.step && s.integrate.tol) r.fail("tol", "give either step or tol, not both");
   r.finish();
-  // MEGNO and λ_max integrate a tangent map: their default adaptive method has one.
-  for (const char* q : {"megno", "lyapunov_max"}) {
-    if (std::find(s.quantities.begin(), s.quantities.end(), q) != s.quantities.end()) {
-      s.integrate.tangent = true;
-    }
-  }
 }
 
 void read_level(io::TableReader& top, SweepFile& s) {

@@ -64,14 +64,18 @@ TEST(ChaosCli, SpinSplitHasATangentMap) {
   EXPECT_EQ(std::count(exact.err.begin(), exact.err.end(), '\n'), 1) << exact.err;
 }
 
-// The adaptive pairs integrate the variational equations: "step" is null and "tol" given.
+// The adaptive methods integrate the variational equations: "step" is null and "tol" given; with a
+// tolerance alone, Taylor's method on the quadratic field (as for simulate).
 TEST(ChaosCli, AdaptiveMethod) {
   const CliResult r = run("chaos " + brun() + " --t-end 20 --tol 1e-10 --json");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  EXPECT_EQ(j["method"], "dop853");
+  EXPECT_EQ(j["method"], "taylor");
   EXPECT_TRUE(j["step"].is_null());
   EXPECT_EQ(j["tol"], 1e-10);
+  const CliResult d = run("chaos " + brun() + " --t-end 20 --tol 1e-10 --method dop853 --json");
+  ASSERT_EQ(d.code, 0) << d.err;
+  EXPECT_EQ(nlohmann::json::parse(d.out)["method"], "dop853");
 }
 
 TEST(ChaosCli, HistoryCsv) {

@@ -1,6 +1,6 @@
 // Taylor's method: its coefficients against the right-hand side and its derivative, the summed
 // series against the closed-form free body and a reference near round-off, the order of a step,
-// the error control, the attitude, a constant solution, and the fields and commands it refuses.
+// the error control, the attitude, a constant solution, the fields it refuses and the defaults.
 
 #include <gtest/gtest.h>
 
@@ -219,16 +219,9 @@ TEST(Taylor, OtherFieldsAreRefused) {
   EXPECT_TRUE(r.out.empty()) << r.out;
 }
 
-TEST(Taylor, ChaosIndicatorsAreRefused) {
-  const test::CliResult r = test::run_newtop(
-      "chaos " + test::example_path("brun.toml") + " --t-end 5 --method taylor --tol 1e-10",
-      test::Stderr::separate);
-  EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("taylor has no tangent map"), std::string::npos) << r.err;
-}
-
-// With a tolerance and no method: taylor on the quadratic field, dop853 on an exact or multipole
-// field and for the chaos indicators (docs/performance.md, "The default method").
+// With a tolerance and no method: taylor on the quadratic field (with and without the chaos
+// indicators' tangent map), dop853 on an exact or multipole field (docs/performance.md, "The
+// default method").
 TEST(Taylor, DefaultWithAToleranceFollowsTheFieldAndTheCommand) {
   auto method_of = [](const std::string& args) {
     const test::CliResult r = test::run_newtop(args + " --json", test::Stderr::separate);
@@ -241,6 +234,9 @@ TEST(Taylor, DefaultWithAToleranceFollowsTheFieldAndTheCommand) {
                       " --t-end 0.5 --tol 1e-10"),
             "dop853");
   EXPECT_EQ(method_of("chaos " + test::example_path("brun.toml") + " --t-end 2 --tol 1e-10"),
+            "taylor");
+  EXPECT_EQ(method_of("chaos " + test::example_path("exact_box_multipole.toml") +
+                      " --t-end 0.5 --tol 1e-10"),
             "dop853");
 }
 

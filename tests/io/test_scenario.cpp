@@ -73,9 +73,6 @@ TEST(Scenario, ValidFileBuildsTheModel) {
   EXPECT_EQ(m.name, kDefaultFixedMethod);
   EXPECT_EQ(m.step, 0.01);
   EXPECT_EQ(resolve_method(s, with_tol(1e-9)).name, kDefaultQuadraticAdaptiveMethod);
-  IntegrateOverrides tangent = with_tol(1e-9);
-  tangent.tangent = true;  // a run with a tangent map: a method that has one
-  EXPECT_EQ(resolve_method(s, tangent).name, kDefaultAdaptiveMethod);
   EXPECT_EQ(resolve_method(s, with_method("rk4")).step, 0.01);
   EXPECT_THROW(resolve_method(s, with_method("dopri5")), InputError);  // no tolerance anywhere
 }

@@ -106,11 +106,11 @@ TEST(Chaos, GenericHeavyBodyIsChaotic) {
   const phase::ChaosSample sp = indicators(model, x0, T, spin);
   EXPECT_NEAR(sp.lyapunov_max, a.lyapunov_max, 0.01 * a.lyapunov_max);
   EXPECT_NEAR(sp.megno, a.megno, 0.01 * a.megno);
-  // The variational equations of RK4 and of the adaptive pairs give the same exponent (second
-  // methods).
+  // The variational equations of RK4, of the adaptive pairs and of Taylor's method give the same
+  // exponent (second methods).
   const phase::ChaosSample r = indicators(model, x0, T, fixed("rk4", 0.01));
   EXPECT_NEAR(r.lyapunov_max, a.lyapunov_max, 0.01 * a.lyapunov_max);
-  for (const char* pair : {"rkf78", "dopri5", "dop853"}) {
+  for (const char* pair : {"rkf78", "dopri5", "dop853", "taylor"}) {
     MethodSettings m;
     m.name = pair;
     m.abs_tol = m.rel_tol = 1e-11;

@@ -31,18 +31,18 @@ const MethodInfo& method_info(std::string_view name);
 /// Default method when only a step is given: the splitting method with the best work–precision
 /// at moderate accuracy (docs/performance.md).
 inline constexpr std::string_view kDefaultFixedMethod = "splitting6";
-/// Default method when only a tolerance is given and the field is not the quadratic one, or the run
-/// needs a tangent map: the adaptive method with the best work–precision of those that run every
-/// field and have a tangent map (docs/performance.md).
-inline constexpr std::string_view kDefaultAdaptiveMethod = "dop853";
-/// Default method when only a tolerance is given, on the quadratic field, without a tangent map:
-/// Taylor's method, the fastest to a given state error in every regime measured
+/// Default method when only a tolerance is given and the field is not the quadratic one: the
+/// adaptive method with the best work–precision of those that run every field
 /// (docs/performance.md).
+inline constexpr std::string_view kDefaultAdaptiveMethod = "dop853";
+/// Default method when only a tolerance is given, on the quadratic field: Taylor's method, the
+/// fastest to a given state error in every regime measured, with and without its tangent map
+/// (docs/performance.md, docs/chaos.md).
 inline constexpr std::string_view kDefaultQuadraticAdaptiveMethod = "taylor";
 
 /// The default adaptive method of a run (the two above).
-constexpr std::string_view default_adaptive_method(bool quadratic_field, bool tangent_map) {
-  return quadratic_field && !tangent_map ? kDefaultQuadraticAdaptiveMethod : kDefaultAdaptiveMethod;
+constexpr std::string_view default_adaptive_method(bool quadratic_field) {
+  return quadratic_field ? kDefaultQuadraticAdaptiveMethod : kDefaultAdaptiveMethod;
 }
 
 /// What to run: a method by name with its step (fixed-step methods) or tolerances (adaptive).

@@ -18,9 +18,8 @@
 namespace newtop {
 
 /// Calls fn(stepper) with a stepper of the named method (settings validated) and returns its
-/// result. kWithTaylor = false: for callers with no use for TaylorStepper (the tangent maps), which
-/// get InputError for "taylor" instead.
-template <bool kWithTaylor = true, class Fn>
+/// result.
+template <class Fn>
 decltype(auto) with_stepper(const MethodSettings& settings, Fn&& fn) {
   validate(settings);
   const MethodInfo& info = method_info(settings.name);
@@ -42,12 +41,8 @@ decltype(auto) with_stepper(const MethodSettings& settings, Fn&& fn) {
     return fn(s);
   }
   if (settings.name == "taylor") {
-    if constexpr (kWithTaylor) {
-      TaylorStepper s(settings.abs_tol, settings.rel_tol);
-      return fn(s);
-    } else {
-      throw InputError(kTaylorNoTangent);
-    }
+    TaylorStepper s(settings.abs_tol, settings.rel_tol);
+    return fn(s);
   }
   Fehlberg78Stepper s(settings.abs_tol, settings.rel_tol);
   return fn(s);

@@ -22,10 +22,6 @@ inline constexpr const char* kTaylorFieldOnly =
     "method: taylor expands the quadratic field only (the exact and multipole fields run with "
     "dop853)";
 
-/// The message of a tangent map asked of taylor.
-inline constexpr const char* kTaylorNoTangent =
-    "method: taylor has no tangent map (chaos indicators, MEGNO, Lyapunov): use dop853";
-
 namespace detail {
 
 /// The Taylor coefficients of one solution through a point: m^[n], γ^[n] (and q^[n] with an

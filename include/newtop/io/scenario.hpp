@@ -67,20 +67,16 @@ struct IntegrateOverrides {
   std::optional<double> tol;
   std::optional<double> t_end;
   std::optional<std::string> split;
-  /// The run needs a tangent map (chaos indicators): the default adaptive method is then one
-  /// that has one (default_adaptive_method).
-  bool tangent = false;
 };
 
 /// The method to run: `--method` or the file's method if given; otherwise a step selects the
 /// default splitting method and a tolerance the default adaptive one (default_adaptive_method of
-/// the model's field and o.tangent; the command line's step or
-/// tolerance wins over the file's). Tolerance `tol` sets both absolute and relative tolerance.
-/// Throws InputError when neither a step nor a tolerance is available for the chosen method. The
-/// split of the free body (`--split`, or the file's split when the method run is a splitting
-/// method) sets the ordering: the method's default ordering with that split; `--split` with a
-/// method that is not a splitting method, and the exact split with a gyrostat (k ≠ 0), are bad
-/// input.
+/// the model's field; the command line's step or tolerance wins over the file's). Tolerance `tol`
+/// sets both absolute and relative tolerance. Throws InputError when neither a step nor a tolerance
+/// is available for the chosen method. The split of the free body (`--split`, or the file's split
+/// when the method run is a splitting method) sets the ordering: the method's default ordering with
+/// that split; `--split` with a method that is not a splitting method, and the exact split with a
+/// gyrostat (k ≠ 0), are bad input.
 MethodSettings resolve_method(const Scenario& s, const IntegrateOverrides& o);
 
 /// t_end from the command line or the file; throws InputError if neither gives one.

@@ -1,9 +1,9 @@
 #pragma once
 /// \file
 /// The tangent stepper of any scalar stepper: tangent_of(stepper). newtop's own methods have their
-/// exact tangent maps (tangent.hpp, tangent_adaptive.hpp): the splitting methods the derivative of
-/// each sub-flow, rk4 and the embedded pairs the variational equations. Any other fixed-step
-/// stepper of the conformance suite (a FixedStepper on State) is wrapped in
+/// exact tangent maps (tangent.hpp, tangent_adaptive.hpp, tangent_taylor.hpp): the splitting methods the derivative of
+/// each sub-flow, rk4, the embedded pairs and Taylor's method the variational equations. Any other
+/// fixed-step stepper of the conformance suite (a FixedStepper on State) is wrapped in
 /// FiniteDifferenceTangent: the derivative of its own one-step map by central differences.
 /// with_tangent_stepper() gives the tangent stepper of a method by name.
 
@@ -13,6 +13,7 @@
 #include "newtop/integrate/methods.hpp"
 #include "newtop/phase/tangent.hpp"
 #include "newtop/phase/tangent_adaptive.hpp"
+#include "newtop/phase/tangent_taylor.hpp"
 
 namespace newtop::phase {
 
@@ -82,6 +83,12 @@ struct TangentOf<Dop853Stepper> {
   static type make(const Dop853Stepper& s) { return type(s.abs_tol(), s.rel_tol()); }
 };
 
+template <>
+struct TangentOf<TaylorStepper> {
+  using type = TangentTaylorStepper;
+  static type make(const TaylorStepper& s) { return type(s.abs_tol(), s.rel_tol(), s.order()); }
+};
+
 /// The tangent stepper of a scalar stepper (same method, same coefficients or tolerances).
 template <class S>
 typename TangentOf<S>::type tangent_of(const S& stepper) {
@@ -93,7 +100,7 @@ typename TangentOf<S>::type tangent_of(const S& stepper) {
 template <class Fn>
 decltype(auto) with_tangent_stepper(const MethodSettings& settings, Fn&& fn) {
   check_tangent_method(settings);
-  return with_stepper<false>(settings, [&](auto& s) {
+  return with_stepper(settings, [&](auto& s) {
     auto t = tangent_of(s);
     return fn(t);
   });
