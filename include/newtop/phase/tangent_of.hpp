@@ -1,11 +1,11 @@
 #pragma once
 /// \file
 /// The tangent stepper of any scalar stepper: tangent_of(stepper). newtop's own methods have their
-/// exact tangent maps (tangent.hpp, tangent_adaptive.hpp, tangent_taylor.hpp): the splitting methods the derivative of
-/// each sub-flow, rk4, the embedded pairs and Taylor's method the variational equations. Any other
-/// fixed-step stepper of the conformance suite (a FixedStepper on State) is wrapped in
-/// FiniteDifferenceTangent: the derivative of its own one-step map by central differences.
-/// with_tangent_stepper() gives the tangent stepper of a method by name.
+/// exact tangent maps (tangent.hpp, tangent_adaptive.hpp, tangent_taylor.hpp): the splitting
+/// methods the derivative of each sub-flow, rk4, the embedded pairs and Taylor's method the
+/// variational equations. Any other fixed-step stepper of the conformance suite (a FixedStepper on
+/// State) is wrapped in FiniteDifferenceTangent: the derivative of its own one-step map by central
+/// differences. with_tangent_stepper() gives the tangent stepper of a method by name.
 
 #include <algorithm>
 #include <cmath>
