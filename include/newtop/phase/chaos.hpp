@@ -27,7 +27,9 @@ struct ChaosSample {
   double megno_y = 0;       ///< Y(t) = (2/(t − t0)) ∫ (s − t0) d ln|δ(s)|
   double megno = 0;         ///< ⟨Y⟩(t), the running time average of Y
   double fli = 0;           ///< FLI(t) = max_{s ≤ t} ln|δ(s)|
-  std::optional<std::array<double, 6>> spectrum;  ///< Σ ln|R_ii| / (t − t0), descending
+  /// Σ ln|R_ii| / (t − t0) in Benettin's column order (descending only as t → ∞: at a finite
+  /// time exponents near zero may come in any order).
+  std::optional<std::array<double, 6>> spectrum;
 };
 
 /// The observer: renormalises the tangent vectors after every step (QR when there are several)
