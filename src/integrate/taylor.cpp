@@ -125,7 +125,7 @@ void expand_kernel(const TaylorModel& p, int order, TaylorSeries& s, bool baseli
 
 double coefficient_norm(const TaylorSeries& s, int n) {
   const auto i = static_cast<std::size_t>(n);
-  const double r = nan_max(norm_inf(s.m[i], 3), norm_inf(s.gamma[i], 3));
+  const double r = pair_norm(s.m[i], s.gamma[i]);
   return s.attitude ? nan_max(r, norm_inf(s.q[i], 4)) : r;
 }
 

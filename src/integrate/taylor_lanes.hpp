@@ -105,6 +105,11 @@ inline double norm_inf(const Lanes& a, int lanes) {
 
 inline double nan_max(double a, double b) { return a >= b || std::isnan(a) ? a : b; }
 
+// The max norm of a coefficient (m^[n], γ^[n]) of the state or of a tangent vector.
+inline double pair_norm(const Lanes& m, const Lanes& gamma) {
+  return nan_max(norm_inf(m, 3), norm_inf(gamma, 3));
+}
+
 /// The step of a series of order p from the norms of its coefficients, norm(n) for n = 0..p:
 /// min over n = p − 1, p of (ε / norm(n))^(1/n), ε = max(abs_tol, rel_tol norm(0)), times Jorba and
 /// Zou's safety factor exp(−0.7/(p − 1)); if both vanish, the highest order that does not; none:

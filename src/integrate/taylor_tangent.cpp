@@ -80,11 +80,6 @@ template <class L>
 }
 #endif
 
-double state_norm(const TaylorSeries& s, int n) {
-  const auto i = static_cast<std::size_t>(n);
-  return nan_max(norm_inf(s.m[i], 3), norm_inf(s.gamma[i], 3));
-}
-
 }  // namespace
 
 void taylor_expand_tangent(const TaylorModel& model, const TaylorSeries& s, const phase::Tangent& V,
@@ -115,9 +110,9 @@ double taylor_tangent_step(const TaylorSeries& s, const TaylorTangentSeries& ts,
                            double rel_tol) {
   auto norm = [&](int n) {
     const auto i = static_cast<std::size_t>(n);
-    double r = state_norm(s, n);
+    double r = pair_norm(s.m[i], s.gamma[i]);
     for (std::size_t c = 0; c < static_cast<std::size_t>(ts.columns); ++c) {
-      r = nan_max(r, nan_max(norm_inf(ts.m[c][i], 3), norm_inf(ts.gamma[c][i], 3)));
+      r = nan_max(r, pair_norm(ts.m[c][i], ts.gamma[c][i]));
     }
     return r;
   };
