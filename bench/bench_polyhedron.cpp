@@ -15,7 +15,7 @@ namespace {
 
 const newtop::Polyhedron& eros() {
   static const newtop::Polyhedron p = newtop::io::load_polyhedron(
-      std::string(NEWTOP_SHARED_DIR) + "/data/polyhedra/eros.face", 1.0);
+      std::string(NEWTOP_DATA_DIR) + "/polyhedra/eros.face", 1.0);
   return p;
 }
 

@@ -1,4 +1,4 @@
-# The model keeps the attracting centre fixed (spec §1): an example that speaks of an orbit must
+# The model keeps the attracting centre fixed (docs/model.md §1): an example that speaks of an orbit must
 # also say that the centre is fixed, so that no scenario passes itself off as orbital motion. An
 # orbit scenario (an [orbit] section, docs/orbit.md) has the orbital model and is exempt.
 #   cmake -DEXAMPLES=DIR -P check_model_claims.cmake

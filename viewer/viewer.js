@@ -1,6 +1,6 @@
 // newtop view: plays a newtop trajectory in 3D (three.js) beside the drift of its integrals.
 // The page's data (the JSON block "newtop-data", written by `newtop view`) holds the CSV's rows and,
-// with --scenario, the body. Every vector is in the body's principal axes (spec §1). With q0..q3
+// with --scenario, the body. Every vector is in the body's principal axes (docs/model.md §1). With q0..q3
 // (body -> inertial, scalar first) the body group turns by that quaternion in a fixed inertial
 // frame; without them the body is fixed and the direction to the centre, -gamma(t), moves.
 // window.newtopView exposes the state for tests and scripting (setTime, state, frames).

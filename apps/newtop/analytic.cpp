@@ -191,7 +191,7 @@ void print_summary(const io::Scenario& sc, const AnalyticDetection& det, const i
 
 int run(const AnalyticArgs& a) {
   const io::Scenario sc = io::load_scenario(a.scenario);
-  require_quadratic(sc.model, sc.source, "newtop analytic (the closed forms of spec §5)");
+  require_quadratic(sc.model, sc.source, "newtop analytic (the closed forms of docs/model.md §5)");
   const AnalyticDetection det = detect_analytic_case(sc.model.quadratic(), sc.initial);
   io::Json j;
   j["case"] = to_string(det.kind);

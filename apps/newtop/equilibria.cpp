@@ -1,5 +1,5 @@
-// newtop equilibria SCENARIO.toml: every equilibrium of the body at rest (spec §7), its type and
-// the count rule.
+// newtop equilibria SCENARIO.toml: every equilibrium of the body at rest (docs/model.md §7), its
+// type and the count rule.
 
 #include "newtop/analysis/equilibria.hpp"
 

@@ -1,5 +1,5 @@
 // newtop field SCENARIO.toml --gamma g1,g2,g3: exact and quadratic field of a mass model at one
-// orientation (spec §2, §3), and with --scan-R the error of the quadratic model against R.
+// orientation (docs/model.md §2, §3), and with --scan-R the error of the quadratic model against R.
 
 #include <cmath>
 #include <iostream>

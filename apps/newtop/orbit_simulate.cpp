@@ -18,7 +18,7 @@ namespace {
 
 struct Tracker {
   OrbitValues initial, max_drift;
-  double max_geometric = 0.0;  ///< max |γ·γ − γ0·γ0|, the geometric integral of spec §5
+  double max_geometric = 0.0;  ///< max |γ·γ − γ0·γ0|, the geometric integral of docs/model.md §5
   void observe(const OrbitValues& v) {
     max_geometric =
         std::max(max_geometric, std::abs(v.casimirs.gamma_gamma - initial.casimirs.gamma_gamma));

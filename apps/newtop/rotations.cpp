@@ -1,5 +1,5 @@
-// newtop rotations SCENARIO.toml: the families of permanent rotations (spec §8), the Staude cone
-// sampled to CSV with --out.
+// newtop rotations SCENARIO.toml: the families of permanent rotations (docs/model.md §8), the
+// Staude cone sampled to CSV with --out.
 
 #include "newtop/analysis/rotations.hpp"
 
@@ -49,7 +49,7 @@ io::Json rotations_json(const RotationFamilies& f) {
 }
 
 void print_rotations(std::ostream& os, const RotationFamilies& f, FieldKind kind) {
-  os << "permanent rotations omega = Omega gamma (spec §8)\n";
+  os << "permanent rotations omega = Omega gamma (docs/model.md §8)\n";
   for (const auto& a : f.principal_axes) {
     os << "  principal axis gamma = " << format_vector(a) << ": any Omega\n";
   }

@@ -1,6 +1,6 @@
 // newtop stability SCENARIO.toml: linear and energy–Casimir stability of the scenario's initial
-// state (an equilibrium or a permanent rotation) or of the spin --axis/--omega (spec §7–§9);
-// stability diagrams along Ω (--scan-omega) or over two parameters (--scan).
+// state (an equilibrium or a permanent rotation) or of the spin --axis/--omega (docs/model.md
+// §7–§9); stability diagrams along Ω (--scan-omega) or over two parameters (--scan).
 
 #include <iostream>
 #include <memory>

@@ -1,4 +1,4 @@
-"""Figures of the qualitative analysis (spec §7–§9) and of the other one-shot subcommands:
+"""Figures of the qualitative analysis (docs/model.md §7–§9) and of the other one-shot subcommands:
 equilibria over a map of V, the Staude cone, Beletsky's stability diagram, spectra, analytic
 solutions, integral search, the exact field."""
 
@@ -10,7 +10,7 @@ from . import _sphere, results
 from ._common import EPS, new_figure
 from .results import Result, UnrecognisedResult
 
-QUADRATIC_NOTE = "V = M g r0·γ + ½ λ γ·Iγ (spec §3)"
+QUADRATIC_NOTE = "V = M g r0·γ + ½ λ γ·Iγ (docs/model.md §3)"
 
 
 def _model_is_quadratic(data):
@@ -95,7 +95,7 @@ def integrals_figure(res: Result):
 
 
 def staude_cone_figure(cone: Result, rotations: Result | None = None):
-    """The Staude cone γ·(Iγ × r0) = 0 on the sphere (spec §8): admissible axes (Ω² ≥ 0)
+    """The Staude cone γ·(Iγ × r0) = 0 on the sphere (docs/model.md §8): admissible axes (Ω² ≥ 0)
     coloured by Ω², the others grey; principal axes from a rotations JSON when given."""
     c = cone.columns
     g = np.column_stack([c["gamma1"], c["gamma2"], c["gamma3"]])
@@ -158,7 +158,7 @@ def _omega_scan_arrays(res: Result):
 
 
 def omega_scan_figure(res: Result):
-    """Beletsky's diagram along Ω (spec §9): max Re s against Ω, stable ranges shaded, with the
+    """Beletsky's diagram along Ω (docs/model.md §9): max Re s against Ω, stable ranges shaded, with the
     thresholds Ω* (formula and numeric, from the stability JSON) and Ω = √λ."""
     w, re, stable, lyap = _omega_scan_arrays(res)
     fig = new_figure(8, 4.5)

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-#: Marker and colour of each equilibrium type (newtop equilibria, spec §7).
+#: Marker and colour of each equilibrium type (newtop equilibria, docs/model.md §7).
 EQUILIBRIUM_STYLE = {
     "minimum": dict(marker="v", color="#1a9850", label="minimum (stable)"),
     "saddle": dict(marker="X", color="#fdae61", label="saddle"),
@@ -17,7 +17,7 @@ AXIS_INDEX = {"x": 0, "y": 1, "z": 2}
 
 
 def quadratic_potential(model, gamma):
-    """V(γ) = M g r0·γ + ½ λ γ·Iγ (spec §3) from the "model" block of newtop's JSON; gamma has
+    """V(γ) = M g r0·γ + ½ λ γ·Iγ (docs/model.md §3) from the "model" block of newtop's JSON; gamma has
     shape (..., 3)."""
     inertia = np.asarray(model["inertia"], dtype=float)
     mg_r0 = model["mass"] * model["g"] * np.asarray(model["center_of_mass"], dtype=float)

@@ -1,4 +1,4 @@
-// Mass models (spec §2) from Python, and the exact and multipole models on them.
+// Mass models (docs/model.md §2) from Python, and the exact and multipole models on them.
 
 #include "newtop/exact/mass_models.hpp"
 
@@ -33,7 +33,7 @@ const char* kind(const MassModel& m) {
 
 void bind_mass_models(py::module_& m) {
   py::class_<PyMassModel>(m, "MassModel",
-                          "A mass model (spec section 2): point masses, a homogeneous polyhedron "
+                          "A mass model (docs/model.md §2): point masses, a homogeneous polyhedron "
                           "(a mesh file or vertices and faces, or a box) or a homogeneous "
                           "ellipsoid, in the user's frame.")
       .def_static(
@@ -101,7 +101,8 @@ void bind_mass_models(py::module_& m) {
           },
           py::arg("mass_model"), py::arg("mu"), py::arg("R"),
           py::arg("gyrostat") = Vec3::Zero().eval(),
-          "The exact field of a centre of parameter mu at distance R (spec section 2) on the body "
+          "The exact field of a centre of parameter mu at distance R (docs/model.md §2) on the "
+          "body "
           "of the mass model (its principal axes at O).")
       .def_static(
           "multipole",

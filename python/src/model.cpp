@@ -1,4 +1,4 @@
-// Body, QuadraticField, Model, State and Scenario (spec §1–§5) as Python classes.
+// Body, QuadraticField, Model, State and Scenario (docs/model.md §1–§5) as Python classes.
 
 #include "newtop/model/model.hpp"
 
@@ -27,7 +27,7 @@ py::dict integrals_dict(const IntegralValues& v) {
 
 void bind_body(py::module_& m) {
   py::class_<Body>(m, "Body",
-                   "A rigid body (or gyrostat) about a fixed point O (spec section 1): principal "
+                   "A rigid body (or gyrostat) about a fixed point O (docs/model.md §1): principal "
                    "moments (A, B, C), mass M, centre of mass r0 and gyrostatic moment k, in the "
                    "principal axes Oxyz.")
       .def_static("from_principal", &Body::from_principal, py::arg("inertia"),
@@ -58,7 +58,7 @@ void bind_body(py::module_& m) {
 
 void bind_field(py::module_& m) {
   py::class_<QuadraticField>(m, "QuadraticField",
-                             "The quadratic field of spec section 3: V(gamma) = M g r0.gamma + "
+                             "The quadratic field of docs/model.md §3: V(gamma) = M g r0.gamma + "
                              "1/2 lambda gamma.I gamma.")
       .def_readonly("g", &QuadraticField::g, "field intensity at O")
       .def_readonly("lambda_", &QuadraticField::lambda_, "lambda (3 g / R for a Newtonian centre)")
@@ -79,7 +79,7 @@ void bind_field(py::module_& m) {
 
 void bind_state(py::module_& m) {
   py::class_<State>(m, "State",
-                    "The Euler-Poisson state (spec section 4): angular momentum m = I omega + k "
+                    "The Euler-Poisson state (docs/model.md §4): angular momentum m = I omega + k "
                     "and gamma, the unit vector from the centre towards O, in body axes.")
       .def(py::init([](const Vec3& m_, const Vec3& gamma) {
              return State{m_, gamma};
@@ -98,9 +98,10 @@ void bind_state(py::module_& m) {
 }
 
 void bind_model_class(py::module_& m) {
-  py::class_<Model>(m, "Model",
-                    "A body in a field: quadratic (spec section 3), or, loaded from a scenario, "
-                    "the exact field of a mass model or its multipole expansion (spec section 2).")
+  py::class_<Model>(
+      m, "Model",
+      "A body in a field: quadratic (docs/model.md §3), or, loaded from a scenario, "
+      "the exact field of a mass model or its multipole expansion (docs/model.md §2).")
       .def(py::init<const Body&, const QuadraticField&>(), py::arg("body"), py::arg("field"))
       .def_property_readonly("body", &Model::body)
       .def_property_readonly(
@@ -120,7 +121,7 @@ void bind_model_class(py::module_& m) {
           "the field's moment about O: gamma x dV/dgamma")
       .def(
           "rhs", [](const Model& x, const State& s) { return rhs(x, s); }, py::arg("state"),
-          "(dm/dt, dgamma/dt) of the Euler-Poisson equations (spec section 4)")
+          "(dm/dt, dgamma/dt) of the Euler-Poisson equations (docs/model.md §4)")
       .def(
           "quadratic_approximation",
           [](const Model& x) { return Model(quadratic_approximation(x)); },
@@ -128,7 +129,7 @@ void bind_model_class(py::module_& m) {
   m.def(
       "integrals", [](const Model& x, const State& s) { return integrals_dict(integrals(x, s)); },
       py::arg("model"), py::arg("state"),
-      "The first integrals of spec section 5 at a state: energy, area m.gamma, geometric "
+      "The first integrals of docs/model.md §5 at a state: energy, area m.gamma, geometric "
       "gamma.gamma, and brun / lagrange where they hold.");
   m.def(
       "conserved_integrals", [](const Model& x) { return conserved_integrals(x); },

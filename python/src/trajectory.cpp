@@ -151,7 +151,7 @@ void bind_trajectory(py::module_& m) {
       py::arg("model"), py::arg("state"), py::arg("t_end"), py::kw_only(), py::arg("t0") = 0.0,
       py::arg("method") = py::none(), py::arg("step") = py::none(), py::arg("tol") = py::none(),
       py::arg("max_steps") = py::none(), py::arg("quaternion") = py::none(),
-      "Integrates the Euler-Poisson equations (spec section 4) from (t0, state) to t_end with a "
+      "Integrates the Euler-Poisson equations (docs/model.md §4) from (t0, state) to t_end with a "
       "method by name (splitting2..8, rk4, dopri5, rkf78, dop853, taylor); a step selects "
       "splitting6 by default and a tolerance taylor on the quadratic field, dop853 on the others. "
       "Returns a dict of numpy arrays over the accepted steps: t (N), "

@@ -134,7 +134,8 @@ void add_point(const QuadraticModel& model, const Vec3& gamma, EquilibriumSet& s
   set.equilibria.push_back(make_equilibrium(model, gamma));
 }
 
-/// κ = d_G for a group G whose components of b vanish (spec §7, "when a component x0_i = 0").
+/// κ = d_G for a group G whose components of b vanish (docs/model.md §7, "when a component x0_i =
+/// 0").
 void add_degenerate(const QuadraticModel& model, const Secular& s, std::size_t k,
                     EquilibriumSet& set) {
   const double kappa = s.d_inactive[k];

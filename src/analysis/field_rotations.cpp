@@ -1,4 +1,4 @@
-// Permanent rotations ω = Ωγ in any field (spec §8): with k = 0 the fixed-point condition
+// Permanent rotations ω = Ωγ in any field (docs/model.md §8): with k = 0 the fixed-point condition
 // Ω² Iγ × γ + L(γ) = 0 says L(γ) = Ω² γ × Iγ, so the admissible axes are the curve
 // f(γ) = γ·(L(γ) × (γ × Iγ)) = 0 on the sphere, with Ω² = L·(γ × Iγ)/|γ × Iγ|².
 
@@ -22,7 +22,8 @@ RotationFamilies permanent_rotations(const Model& model, int samples) {
   const Body& body = model.body();
   if (!body.gyrostat().isZero(0.0)) {
     throw InputError(
-        "gyrostat: permanent rotations (spec §8) need a body without rotor, k = [0, 0, 0]; found "
+        "gyrostat: permanent rotations (docs/model.md §8) need a body without rotor, k = [0, 0, "
+        "0]; found "
         "k = " +
         format_vector(body.gyrostat()));
   }

@@ -88,7 +88,7 @@ double cone_omega_squared(const QuadraticModel& model, const Vec3& gamma) {
 RotationFamilies permanent_rotations(const QuadraticModel& model, int samples) {
   if (!model.body.gyrostat().isZero(0.0)) {
     throw InputError(
-        "gyrostat: permanent rotations (spec §8) need a body without rotor, k = [0, 0, "
+        "gyrostat: permanent rotations (docs/model.md §8) need a body without rotor, k = [0, 0, "
         "0]; found k = " +
         format_vector(model.body.gyrostat()));
   }

@@ -1,5 +1,5 @@
-// Equilibria at rest in any field (spec §7): the critical points of V on the unit sphere, found
-// by Levenberg–Marquardt on the moment L(γ) = γ × ∂V/∂γ = 0 from many starts.
+// Equilibria at rest in any field (docs/model.md §7): the critical points of V on the unit sphere,
+// found by Levenberg–Marquardt on the moment L(γ) = γ × ∂V/∂γ = 0 from many starts.
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>

@@ -1,6 +1,6 @@
-// Mass moments M_α = ∫ ρ^α dm of every mass model, exact (spec §3, docs/exact_field.md), stored
-// for the body scaled by its radius r: M̃_α = ∫ (ρ/r)^α dm (mass units, |M̃_α| ≤ M), so that no
-// degree overflows or underflows whatever the body's size.
+// Mass moments M_α = ∫ ρ^α dm of every mass model, exact (docs/model.md §3, docs/exact_field.md),
+// stored for the body scaled by its radius r: M̃_α = ∫ (ρ/r)^α dm (mass units, |M̃_α| ≤ M), so that
+// no degree overflows or underflows whatever the body's size.
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
-// Multipole series of the exact field (spec §3): Taylor coefficients of 1/|x|, the sums over the
-// mass moments with their first and second derivatives, and MultipoleField. The series are summed
-// for the body scaled by its radius r (ỹ = y/r, M̃_α = M_α / r^|α|), every term then of size
+// Multipole series of the exact field (docs/model.md §3): Taylor coefficients of 1/|x|, the sums
+// over the mass moments with their first and second derivatives, and MultipoleField. The series are
+// summed for the body scaled by its radius r (ỹ = y/r, M̃_α = M_α / r^|α|), every term then of size
 // M (r/R)^(n+1), and the powers of r applied at the end.
 
 #include "newtop/exact/multipole.hpp"

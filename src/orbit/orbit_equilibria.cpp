@@ -53,7 +53,8 @@ bool newton(const F& f, double& x) {
 }
 
 /// γ = ±e_j (c = 0), possible when h_j = 0: n in the plane ⊥ e_j with In + h ∥ n there,
-/// (I_i + b) n_i = −h_i for the two other axes, a secular equation in b (spec §7 in a plane).
+/// (I_i + b) n_i = −h_i for the two other axes, a secular equation in b (docs/model.md §7 in a
+/// plane).
 void add_principal_gamma(const EquilibriumProblem& pb, int j, std::vector<Orientation>& out) {
   const int i = (j + 1) % 3, l = (j + 2) % 3;
   std::vector<Vec3> normals;

@@ -1,6 +1,6 @@
 #pragma once
-// High-precision references for the exact field (spec §2), independent of the library's formulas:
-// direct point-mass sums, the closed form of a homogeneous rectangular prism (MacMillan's
+// High-precision references for the exact field (docs/model.md §2), independent of the library's
+// formulas: direct point-mass sums, the closed form of a homogeneous rectangular prism (MacMillan's
 // antiderivative of 1/r) and the ellipsoid in Carlson's integrals, all evaluated in
 // Boost.Multiprecision (50 or 100 significant digits) in the naive form L = γ × ∂V/∂γ. They lose
 // the same (R/r)² (prism: (R/r)⁵) digits to cancellation as the double formulas once did, but from

@@ -17,7 +17,7 @@ namespace newtop {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-const std::string kData = std::string(NEWTOP_SHARED_DIR) + "/data/polyhedra/";
+const std::string kData = std::string(NEWTOP_DATA_DIR) + "/polyhedra/";
 
 const Polyhedron& eros() {
   static const Polyhedron p = io::load_polyhedron(kData + "eros.face", 2.67);

@@ -1,4 +1,4 @@
-// Exact field of spec §2: moment, force and their identities; motion in the exact field.
+// Exact field of docs/model.md §2: moment, force and their identities; motion in the exact field.
 
 #include <gtest/gtest.h>
 
@@ -53,8 +53,8 @@ TEST(ExactField, MomentIsGammaCrossFiniteDifferenceGradient) {
 }
 
 TEST(ExactField, ForceIdentitiesAgainstDirectIntegral) {
-  // Point masses: F = −μ Σ m (Rγ + ρ)/|Rγ + ρ|³ and L = μR γ × Σ m ρ/|Rγ + ρ|³ (spec §2, corrected
-  // sign) computed directly; the formulas from ∂V/∂γ and ∂V/∂R must reproduce them.
+  // Point masses: F = −μ Σ m (Rγ + ρ)/|Rγ + ρ|³ and L = μR γ × Σ m ρ/|Rγ + ρ|³ (docs/model.md §2,
+  // corrected sign) computed directly; the formulas from ∂V/∂γ and ∂V/∂R must reproduce them.
   const double mu = 3.0, R = 5.0;
   const auto pm = points();
   const ExactField f = ExactField::make(pm, mu, R);
@@ -80,7 +80,7 @@ TEST(ExactField, ForceIdentitiesAgainstDirectIntegral) {
 }
 
 TEST(ExactField, PolyhedronForceIsMinusMuGradientAndNormalToMoment) {
-  // F = −μ ∇Φ(−Rγ) directly from the closed form, against the spec §2 formula.
+  // F = −μ ∇Φ(−Rγ) directly from the closed form, against the docs/model.md §2 formula.
   const auto model = exact_model(offset_box(), 2.0, 4.0);
   const Vec3 gm = model.field.axes * kGamma;
   const Attraction a = attraction(*model.field.mass_model, -4.0 * gm);

@@ -1,6 +1,6 @@
-// Equilibria at rest in the exact and multipole fields (spec §7): the search on the sphere against
-// a brute-force grid of V, the count rule, convergence to the quadratic model's equilibria far
-// from the body, and the linearisation with the field's own moment Jacobian.
+// Equilibria at rest in the exact and multipole fields (docs/model.md §7): the search on the sphere
+// against a brute-force grid of V, the count rule, convergence to the quadratic model's equilibria
+// far from the body, and the linearisation with the field's own moment Jacobian.
 
 #include <gtest/gtest.h>
 

@@ -15,7 +15,7 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 // Mass properties are sums of a few dozen products of exact coordinates: a few hundred ulps.
 constexpr double kSumTol = 256 * kEps;
 
-const std::string kData = std::string(NEWTOP_SHARED_DIR) + "/data/polyhedra/";
+const std::string kData = std::string(NEWTOP_DATA_DIR) + "/polyhedra/";
 
 void expect_mat_near(const Mat3& a, const Mat3& b, double tol) {
   EXPECT_LE((a - b).cwiseAbs().maxCoeff(), tol * b.cwiseAbs().maxCoeff()) << a << "\n vs\n" << b;

@@ -1,7 +1,7 @@
-// The moment of the exact and multipole fields far from the body (spec §2, §3): relative error
-// against 50/100-digit references and against the quadratic model, R/r = 1e1 … 1e8. Formed naively
-// as γ × ∂V/∂γ it would lose ε (R/r)² of its digits (∂V/∂γ ≈ μM/R is radial; the moment is (R/r)²
-// smaller); the fields form it without that cancellation.
+// The moment of the exact and multipole fields far from the body (docs/model.md §2, §3): relative
+// error against 50/100-digit references and against the quadratic model, R/r = 1e1 … 1e8. Formed
+// naively as γ × ∂V/∂γ it would lose ε (R/r)² of its digits (∂V/∂γ ≈ μM/R is radial; the moment is
+// (R/r)² smaller); the fields form it without that cancellation.
 //
 // Run `test_exact --gtest_filter='MomentAccuracy.*'` to print the table.
 

@@ -1,5 +1,5 @@
-// Multipole expansion (spec §3): the quadratic model, the R⁻⁴ error law, convergence and the
-// truncation bound; Brun's field from a plane not through O.
+// Multipole expansion (docs/model.md §3): the quadratic model, the R⁻⁴ error law, convergence and
+// the truncation bound; Brun's field from a plane not through O.
 
 #include <gtest/gtest.h>
 
@@ -108,7 +108,8 @@ TEST(Multipole, ConvergesToExactWithinTheTruncationBound) {
 
 TEST(Multipole, BrunFieldFromPlaneNotThroughO) {
   // Brun: V = ½N Σ m (ρ·γ − d)², the force ∝ mass and distance to a plane with normal γ at offset
-  // d. Up to a γ-independent constant it is the general form with λ = −N, g = −N d (spec §3).
+  // d. Up to a γ-independent constant it is the general form with λ = −N, g = −N d (docs/model.md
+  // §3).
   const PointMasses pm({1.0, 2.0, 0.5}, {Vec3(1, 0.2, 0), Vec3(-0.3, 0.7, 0.4), Vec3(0, -1, 1.2)});
   const Body body = body_of(pm);
   const double N = 2.5, d = 0.8;

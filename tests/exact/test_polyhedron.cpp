@@ -15,7 +15,7 @@ namespace newtop {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-const std::string kData = std::string(NEWTOP_SHARED_DIR) + "/data/polyhedra/";
+const std::string kData = std::string(NEWTOP_DATA_DIR) + "/polyhedra/";
 
 // The requirement: potential and gradient to 1e-12 relative on the grid outside the cube.
 // The reference is printed to 15 significant digits (5e-16 relative) and the closed form on the

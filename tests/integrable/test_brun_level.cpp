@@ -37,8 +37,8 @@ std::array<double, 3> working_signs(const BrunCurve& k, const State& s) {
           std::copysign(1.0, w.gamma[2])};
 }
 
-/// The Poisson bracket of spec §4, {F, G} = ∇_m F·(m × ∇_m G + γ × ∇_γ G) + ∇_γ F·(γ × ∇_m G),
-/// by central differences.
+/// The Poisson bracket of docs/model.md §4, {F, G} = ∇_m F·(m × ∇_m G + γ × ∇_γ G) + ∇_γ F·(γ × ∇_m
+/// G), by central differences.
 template <class F, class G>
 double bracket(const F& f, const G& g, const State& x) {
   auto grad = [&](const auto& fn) {

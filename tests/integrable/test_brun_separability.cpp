@@ -59,8 +59,8 @@ Eigen::Vector3cd cross(const Eigen::Vector3cd& a, const Eigen::Vector3cd& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-/// The bracket of spec §4 from two gradients at x, {F, G} = ∇_m F·(m × ∇_m G + γ × ∇_γ G) +
-/// ∇_γ F·(γ × ∇_m G) (as in test_brun_level.cpp), bilinear (no conjugation).
+/// The bracket of docs/model.md §4 from two gradients at x, {F, G} = ∇_m F·(m × ∇_m G + γ × ∇_γ G)
+/// + ∇_γ F·(γ × ∇_m G) (as in test_brun_level.cpp), bilinear (no conjugation).
 Complex bracket(const Gradient& dF, const Gradient& dG, const State& x) {
   const Eigen::Vector3cd m = x.m.cast<Complex>(), g = x.gamma.cast<Complex>();
   const Eigen::Vector3cd Fm = dF.head<3>(), Fg = dF.tail<3>(), Gm = dG.head<3>(), Gg = dG.tail<3>();

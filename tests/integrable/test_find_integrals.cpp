@@ -1,7 +1,7 @@
-// Numerical search for polynomial first integrals (spec §5): the expected number of independent
-// integrals in the generic, Brun, Lagrange and uniform-gravity cases, the theorem on quadratic
-// integrals for polynomial potentials, and Kovalevskaya's quartic integral, which the search was
-// not built around.
+// Numerical search for polynomial first integrals (docs/model.md §5): the expected number of
+// independent integrals in the generic, Brun, Lagrange and uniform-gravity cases, the theorem on
+// quadratic integrals for polynomial potentials, and Kovalevskaya's quartic integral, which the
+// search was not built around.
 
 #include <gtest/gtest.h>
 
@@ -88,7 +88,8 @@ TEST(FindIntegrals, KovalevskayaQuarticIntegralAppearsAtDegreeFour) {
 }
 
 TEST(FindIntegrals, QuadraticIntegralOnlyForTheNewtonianQuadraticPotential) {
-  // Theorem of spec §5: V = ½ Σ λ_i γ_i² admits A²p² + B²q² + C²r² + F(γ) only for λ_i = λ I_i.
+  // Theorem of docs/model.md §5: V = ½ Σ λ_i γ_i² admits A²p² + B²q² + C²r² + F(γ) only for λ_i = λ
+  // I_i.
   const Vec3 I(1.0, 1.7, 2.3);
   const double lambda = 0.9;
   auto quadratic = [&](const Vec3& L) {

@@ -1,6 +1,6 @@
-// The Lagrange-like case (spec §6): γ3(t) as an elliptic function of the quartic, the other angles
-// by quadrature, against an independent numerical integration; the nutation period against
-// event detection; r constant.
+// The Lagrange-like case (docs/model.md §6): γ3(t) as an elliptic function of the quartic, the
+// other angles by quadrature, against an independent numerical integration; the nutation period
+// against event detection; r constant.
 
 // GCC 12 reports a false -Wuninitialized inside Boost.Odeint's Fehlberg 7(8) copy constructor.
 #pragma GCC diagnostic ignored "-Wuninitialized"

@@ -1,5 +1,5 @@
-// Plane pendulum motion (spec §10): Jacobi-function solution (pure gravity gradient) and the
-// quadrature solution (general), against a numerical integration; periods against event
+// Plane pendulum motion (docs/model.md §10): Jacobi-function solution (pure gravity gradient) and
+// the quadrature solution (general), against a numerical integration; periods against event
 // detection.
 
 // GCC 12 reports a false -Wuninitialized inside Boost.Odeint's Fehlberg 7(8) copy constructor.
@@ -91,7 +91,7 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
 TEST(Pendulum, GradientPeriodIsTheClassicalSmallOscillationLimit) {
-  // Small libration of θ = 2φ: period → 2π/ω0, ω0² = λ(B − A)/C (spec §10).
+  // Small libration of θ = 2φ: period → 2π/ω0, ω0² = λ(B − A)/C (docs/model.md §10).
   const QuadraticModel model{Body::from_principal({1, 2, 2.5}, 1.0, Vec3::Zero()),
                              QuadraticField::coulomb(0.0, 3.0)};
   const State x0 = state_from_omega(model.body, {0, 0, 0}, {std::cos(1e-4), -std::sin(1e-4), 0});

@@ -1,5 +1,6 @@
 // The quadratic field's right-hand side as the Runge–Kutta methods evaluate it (OdeSystem with its
-// per-model numbers formed once) against the generic rhs(model, x) of spec §4, the second method.
+// per-model numbers formed once) against the generic rhs(model, x) of docs/model.md §4, the second
+// method.
 
 #include <gtest/gtest.h>
 

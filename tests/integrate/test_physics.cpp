@@ -1,5 +1,6 @@
 // Integrated motion against independent facts: two methods agreeing on a chaotic case, permanent
-// rotations of spec §8 staying put, Brun's integral (spec §5), Casimirs over a million steps.
+// rotations of docs/model.md §8 staying put, Brun's integral (docs/model.md §5), Casimirs over a
+// million steps.
 
 #include <gtest/gtest.h>
 
@@ -34,8 +35,9 @@ TEST(Agreement, SplittingAndAdaptiveAgreeOnChaoticCase) {
   EXPECT_GT(test::distance(test::reference_solution(m, pushed, 10.0, 1e-14), ref), 2e-8);
 }
 
-// Permanent rotations (spec §8) are equilibria of the equations, so every method keeps them up to
-// its truncation error, which for splitting6 at h = 0.01 over T = 10 is ~1e-12; bound 1e-10.
+// Permanent rotations (docs/model.md §8) are equilibria of the equations, so every method keeps
+// them up to its truncation error, which for splitting6 at h = 0.01 over T = 10 is ~1e-12; bound
+// 1e-10.
 constexpr double kStayPut = 1e-10;
 
 void expect_stays_put(const QuadraticModel& m, const Vec3& w, const Vec3& gamma) {

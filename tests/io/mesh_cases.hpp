@@ -20,7 +20,7 @@ struct BadFile {
   std::string message;  // after the path
 };
 
-/// The cube of ../shared/data/polyhedra as OFF, with `last` as the last line.
+/// The cube of data/polyhedra as OFF, with `last` as the last line.
 inline std::string off_cube(const std::string& last) {
   return "OFF\n8 12 0\n-1 -1 -1\n1 -1 -1\n1 1 -1\n-1 1 -1\n-1 -1 1\n1 -1 1\n1 1 1\n-1 1 1\n"
          "3 1 3 2\n3 0 3 1\n3 0 1 5\n3 0 5 4\n3 0 7 3\n3 0 4 7\n3 1 2 6\n3 1 6 5\n3 2 3 6\n"

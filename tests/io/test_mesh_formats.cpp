@@ -1,5 +1,5 @@
 // Valid meshes in every format and encoding give the same polyhedron: the cube and Eros of
-// ../shared/data (TetGen) written by the tests as OFF, OBJ, ASCII and binary PLY (both byte
+// data/polyhedra (TetGen) written by the tests as OFF, OBJ, ASCII and binary PLY (both byte
 // orders) and ASCII and binary STL, read back and compared bit for bit with the TetGen original.
 
 #include <gtest/gtest.h>
@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 // Mass properties are sums of a few dozen products of exact coordinates: a few hundred ulps.
 constexpr double kSumTol = 256 * std::numeric_limits<double>::epsilon();
 
-const std::string kData = std::string(NEWTOP_SHARED_DIR) + "/data/polyhedra/";
+const std::string kData = std::string(NEWTOP_DATA_DIR) + "/polyhedra/";
 
 fs::path scratch(const std::string& name) {
   return fs::temp_directory_path() / ("newtop_mesh_" + std::to_string(::getpid())) / name;

@@ -1,4 +1,5 @@
-// Body construction (spec §1): validation of moments, tensors and the principal-axes rotation.
+// Body construction (docs/model.md §1): validation of moments, tensors and the principal-axes
+// rotation.
 
 #include <gtest/gtest.h>
 
@@ -35,8 +36,8 @@ TEST(Body, RejectsTriangleInequality) {
 
 TEST(Body, AcceptsFlatPlateWhereTriangleInequalityIsAnEquality) {
   // A flat plate in the xy plane has A + B = C exactly (the limiting case of the triangle
-  // inequality, spec §1): accepted, also with the round-off of a diagonalisation (the check's
-  // slack is 8 ε tr I = 16 ε C here); a C beyond that slack is no body.
+  // inequality, docs/model.md §1): accepted, also with the round-off of a diagonalisation (the
+  // check's slack is 8 ε tr I = 16 ε C here); a C beyond that slack is no body.
   const Body b = Body::from_principal(Vec3(1, 2, 3), 1, Vec3::Zero());
   EXPECT_EQ(b.C(), 3.0);
   EXPECT_NO_THROW(Body::from_principal(Vec3(1, 2, 3 * (1 + 4 * kEps)), 1, Vec3::Zero()));

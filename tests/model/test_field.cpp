@@ -1,4 +1,5 @@
-// The quadratic field (spec §3–§4): moment against a finite difference of the potential, variants.
+// The quadratic field (docs/model.md §3–§4): moment against a finite difference of the potential,
+// variants.
 
 #include <gtest/gtest.h>
 

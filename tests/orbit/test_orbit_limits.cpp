@@ -1,5 +1,6 @@
-// Limits of the orbit model: ω0 → 0 at fixed λ is the fixed-centre Euler–Poisson model of spec §4
-// (newtop's own rhs and splitting), and a circular orbit is the e = 0 case of the elliptic one.
+// Limits of the orbit model: ω0 → 0 at fixed λ is the fixed-centre Euler–Poisson model of
+// docs/model.md §4 (newtop's own rhs and splitting), and a circular orbit is the e = 0 case of the
+// elliptic one.
 
 #include <gtest/gtest.h>
 

@@ -150,11 +150,11 @@ TEST(OrbitSection, EllipticCrossingsAgreeBetweenTwoMethods) {
   EXPECT_LT(a.drift.gamma_normal, 64 * kOrbitEps * std::sqrt(2.5e3));  // measured 1.7e-14
 }
 
-// At ω0 = 0 (λ fixed) the orbit model is the fixed-centre model of spec §4 and its splitting the
-// same composition of the same sub-flows (OrbitLimits.ZeroRateSplittingIsTheFixedCentreSplitting):
-// the orbit section and the body section of `newtop section` must give the same crossings, up to
-// the round-off that separates the two steppers (1e-12 over T = 5, there): 1e-11 over T = 30
-// (measured 3e-14 over four crossings).
+// At ω0 = 0 (λ fixed) the orbit model is the fixed-centre model of docs/model.md §4 and its
+// splitting the same composition of the same sub-flows
+// (OrbitLimits.ZeroRateSplittingIsTheFixedCentreSplitting): the orbit section and the body section
+// of `newtop section` must give the same crossings, up to the round-off that separates the two
+// steppers (1e-12 over T = 5, there): 1e-11 over T = 30 (measured 3e-14 over four crossings).
 TEST(OrbitSection, ZeroRateSectionIsTheFixedCentreSection) {
   constexpr double kLambda = 1.7, kSameSection = 1e-11;
   const Body body = test::orbit_body();

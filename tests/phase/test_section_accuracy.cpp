@@ -38,11 +38,11 @@ MethodSettings fixed(const std::string& name, double h) {
   return m;
 }
 
-// Brun's case (spec §5): I4 = |Iω|² − λABC γ·I⁻¹γ is an integral, so the section's points lie on
-// its level curves. Every crossing keeps I4 to the method's accuracy: within twice the largest
-// deviation of I4 along the accepted steps of the same run (the method's own error there), plus
-// the rounding of I4 (64 ε of its terms). A crossing found by any cruder landing (the step's end,
-// or an interpolation of order below the method's) leaves that band.
+// Brun's case (docs/model.md §5): I4 = |Iω|² − λABC γ·I⁻¹γ is an integral, so the section's points
+// lie on its level curves. Every crossing keeps I4 to the method's accuracy: within twice the
+// largest deviation of I4 along the accepted steps of the same run (the method's own error there),
+// plus the rounding of I4 (64 ε of its terms). A crossing found by any cruder landing (the step's
+// end, or an interpolation of order below the method's) leaves that band.
 TEST(SectionAccuracy, BrunIntegralHoldsAtEveryCrossing) {
   const QuadraticModel model = test::brun_model();
   const State x0 = test::generic_state(model);

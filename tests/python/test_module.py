@@ -222,7 +222,7 @@ def test_mass_properties_against_closed_forms():
     assert p.kind == "points" and p.mass == 4.0
     assert np.array_equal(p.center_of_mass, [1.5, 0.0, 0.25])
     assert p.max_radius == 2.0
-    # The exact field of point masses (spec section 2): V(gamma) = -mu sum m_i / |R gamma + rho_i|,
+    # The exact field of point masses (docs/model.md §2): V(gamma) = -mu sum m_i / |R gamma + rho_i|,
     # rho_i in the body's principal axes (P^T rho in the user's frame), summed here independently.
     masses = [1.0, 2.0, 1.5]
     rho = np.array([[1.0, 0.0, 0.0], [0.0, -0.5, 0.3], [0.2, 0.4, -0.7]])

@@ -256,7 +256,7 @@ TEST(StabilityCli, RequestsBeyondTheDocumentedBoundsAreBadInput) {
 }
 
 TEST(StabilityCli, UniformGravityAndRotorCases) {
-  // Uniform gravity with r0 = 0: every orientation; a rotor (k ≠ 0) is outside spec §8.
+  // Uniform gravity with r0 = 0: every orientation; a rotor (k ≠ 0) is outside docs/model.md §8.
   const fs::path toml = temp_file("rotor.toml");
   std::ofstream(toml) << "[body]\ninertia = [1.0, 1.5, 2.0]\ngyrostat = [0.0, 0.0, 0.3]\n"
                          "[field]\nkind = \"uniform\"\ng = 9.81\n"

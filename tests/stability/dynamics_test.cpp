@@ -1,5 +1,6 @@
-// The verdicts against the dynamics: permanent rotations (every family of spec §8) integrate to
-// stay put, pushed unstable ones depart, pushed stable ones stay within a bound ∝ the push.
+// The verdicts against the dynamics: permanent rotations (every family of docs/model.md §8)
+// integrate to stay put, pushed unstable ones depart, pushed stable ones stay within a bound ∝ the
+// push.
 
 #include <gtest/gtest.h>
 
@@ -32,7 +33,7 @@ QuadraticModel model_with(const Vec3& I, const Vec3& r0, double lambda) {
 }
 
 TEST(PermanentRotations, PrincipalAxisSpinsStayPutAtAnyOmega) {
-  // r0 = 0: every principal axis; r0 along e_z: ±e_z (spec §8).
+  // r0 = 0: every principal axis; r0 along e_z: ±e_z (docs/model.md §8).
   const QuadraticModel brun = model_with(Vec3(1.0, 1.6, 2.1), Vec3::Zero(), 0.8);
   const QuadraticModel axial = model_with(Vec3(1.0, 1.6, 2.1), Vec3(0, 0, 0.3), 0.8);
   EXPECT_EQ(permanent_rotations(brun, 8).principal_axes.size(), 6u);

@@ -1,5 +1,5 @@
-// Equilibria of spec §7: the secular polynomial against a brute-force multistart search, the
-// Brun case with its six equilibria, the count rule and the degenerate families.
+// Equilibria of docs/model.md §7: the secular polynomial against a brute-force multistart search,
+// the Brun case with its six equilibria, the count rule and the degenerate families.
 
 #include "newtop/analysis/equilibria.hpp"
 
@@ -90,8 +90,8 @@ EquilibriumType type_by_sampling(const QuadraticModel& model, const Vec3& gamma)
 }
 
 TEST(Equilibria, BrunCaseHasSixEquilibriaWithTypesByMoment) {
-  // r0 = 0 (spec §7): ±e_x, ±e_y, ±e_z; λ > 0: least moment minimum, middle saddle, largest
-  // maximum; λ < 0 reversed. Moments deliberately not sorted by axis.
+  // r0 = 0 (docs/model.md §7): ±e_x, ±e_y, ±e_z; λ > 0: least moment minimum, middle saddle,
+  // largest maximum; λ < 0 reversed. Moments deliberately not sorted by axis.
   const Body body = Body::from_principal(Vec3(1.5, 2.2, 1.0), 1.0, Vec3::Zero());
   for (double lambda : {0.7, -0.7}) {
     const EquilibriumSet set =
@@ -202,7 +202,7 @@ TEST(Equilibria, UniformGravityWithoutOffsetIsEveryOrientation) {
 
 TEST(Equilibria, SymmetricBodyWithAxialOffsetHasACircle) {
   // A = B, r0 on the axis: ±e_z and, where |M g z0 / (λ(A − C))| < 1, a circle with
-  // γ_z = M g z0 / (λ(A − C)) (κ = λA, spec §7 degenerate case with two free components).
+  // γ_z = M g z0 / (λ(A − C)) (κ = λA, docs/model.md §7 degenerate case with two free components).
   const double A = 2.0, C = 1.0, z0 = 0.3, lambda = 1.0;
   const QuadraticModel model{Body::from_principal(Vec3(A, A, C), 1.0, Vec3(0, 0, z0)),
                              QuadraticField::coulomb(1.0, lambda)};

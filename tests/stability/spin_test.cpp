@@ -1,4 +1,4 @@
-// Spin about the radius vector (spec §9): Beletsky's threshold and classification, the
+// Spin about the radius vector (docs/model.md §9): Beletsky's threshold and classification, the
 // characteristic polynomials against the numerical spectrum on the symplectic leaf.
 
 #include <gtest/gtest.h>
@@ -78,7 +78,7 @@ TEST(Beletsky, MiddleMomentAxisIsUnstableExceptAtRootLambda) {
     }
     const Spectrum at = spin_stability(model, 2, std::sqrt(lambda));
     EXPECT_TRUE(at.linearly_stable) << at.max_real_part;
-    // The spectrum there (spec §9): {0, 0, ±i √(λ(1 − a)(1 − b))} on the leaf.
+    // The spectrum there (docs/model.md §9): {0, 0, ±i √(λ(1 − a)(1 − b))} on the leaf.
     const double a = (1.6 - 2.2) / 1.0, b = (1.6 - 1.0) / 2.2;
     const double w = std::sqrt(lambda * (1 - a) * (1 - b));
     EXPECT_NEAR(std::abs(at.eigenvalues[0].imag()), w, 1e-12 * w);

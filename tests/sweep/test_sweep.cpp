@@ -1,5 +1,6 @@
-// Sweeps: the grid, Beletsky's atlas against the closed form of spec §9, results independent of
-// the thread count, a SIGKILLed sweep resumed to the same bytes, and bad sweep files.
+// Sweeps: the grid, Beletsky's atlas against the closed form of docs/model.md §9, results
+// independent of the thread count, a SIGKILLed sweep resumed to the same bytes, and bad sweep
+// files.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -151,11 +152,11 @@ TEST(Sweep, KilledAndResumedEqualsUninterrupted) {
   EXPECT_FALSE(fs::exists(out.string() + ".checkpoint"));
 }
 
-// MEGNO over a small grid of Brun's integrable case (spec §5): every orbit lies on a torus, so
-// ⟨Y⟩ → 2 (Cincotta–Simó) with an oscillating remainder that decays like 1/t: at t = 400 one of
-// these orbits still had 2.22, at t = 2000 they have 2.010, 2.015 and 2.074 (measured); 0.1 leaves
-// room for the remainder's amplitude. The point of the base scenario gives the bits of `newtop
-// chaos`.
+// MEGNO over a small grid of Brun's integrable case (docs/model.md §5): every orbit lies on a
+// torus, so ⟨Y⟩ → 2 (Cincotta–Simó) with an oscillating remainder that decays like 1/t: at t = 400
+// one of these orbits still had 2.22, at t = 2000 they have 2.010, 2.015 and 2.074 (measured); 0.1
+// leaves room for the remainder's amplitude. The point of the base scenario gives the bits of
+// `newtop chaos`.
 TEST(Sweep, MegnoOfAnIntegrableCaseIsTwoAndThatOfNewtopChaos) {
   const SweepFile s = newtop::sweep::load_sweep(write_file(
       "megno.toml",
@@ -201,7 +202,7 @@ TEST(Sweep, LevelPutsEveryStartOnTheEnergyLevel) {
           "\"\nquantities = [\"drift\", \"final_state\"]\n[level]\nenergy = 1.5\nsolve = "
           "\"omega2\"\nsign = \"-\"\n[[axes]]\nkey = \"initial.omega[0]\"\nstart = -2.2\nstop = "
           "2.2\ncount = 9\n[integrate]\nt_end = 5.0\nstep = 0.01\n"));
-  // The scenario's body (section_chaotic.toml): I, M r0, g, λ of spec §3.
+  // The scenario's body (section_chaotic.toml): I, M r0, g, λ of docs/model.md §3.
   const newtop::Vec3 I(1.0, 1.5, 2.2), Mr0(0.3, 0.2, 0.1);
   const double g = -0.4, lambda = -0.8;
   const newtop::sweep::SweepRun run = newtop::sweep::run_sweep(s, {});

@@ -4,7 +4,7 @@ slider set to a recorded time shows the attitude of that CSV row, read back from
 objects (window.newtopView.state()) and compared with the CSV read here.
 
 Environment (set by ctest, tests/viewer/CMakeLists.txt): NEWTOP_EXE, NEWTOP_SOURCE_DIR,
-NEWTOP_CHROMIUM, and NEWTOP_SHARED_DIR for the mesh scenario."""
+and NEWTOP_CHROMIUM; the mesh scenario reads the data/ folder of the source tree."""
 
 from __future__ import annotations
 

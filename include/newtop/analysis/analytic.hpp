@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Which integrable case applies to a model and initial state, and its closed-form or quadrature
-/// solution behind one interface (spec §5, §6, §10; Brun's case on the level f = 0).
+/// solution behind one interface (docs/model.md §5, §6, §10; Brun's case on the level f = 0).
 
 #include <string>
 #include <variant>

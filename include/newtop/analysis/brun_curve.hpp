@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Brun's case (spec §5: r0 = 0, k = 0, V = ½λ γ·Iγ) on the level f = m·γ = 0: the genus-2 curve of
-/// its separation in sphero-conic coordinates on the Poisson sphere (Weber, Kharlamova).
+/// Brun's case (docs/model.md §5: r0 = 0, k = 0, V = ½λ γ·Iγ) on the level f = m·γ = 0: the genus-2
+/// curve of its separation in sphero-conic coordinates on the Poisson sphere (Weber, Kharlamova).
 ///
 /// In a working frame (a signed permutation of the principal axes, det = +1) with the moments
 /// ascending, let κ = ABC, e_i = −κ/I_i (e1 < e2 < e3 < 0) and P(u) = (u − e1)(u − e2)(u − e3). The

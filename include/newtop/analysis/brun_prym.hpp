@@ -12,8 +12,8 @@
 /// u_2, u_3 — the roots of λ C² P(u) = (A u + B)², with v_j = −(A u_j + B)/(√λ C) — collinear on
 /// the cubic. At a zero, α is an isotropic vector orthogonal to X, hence an eigenvector of X×:
 /// X × α = i ξ_j α with ξ_j² = N(u_j) + 2√λ f v_j, which lifts the point to Γ. Along the motion
-/// (spec §4 equations) the divisor P_1 + P_2 + P_3 moves linearly under the Prym differentials
-/// du/(vξ), u du/(vξ) (the holomorphic differentials of Γ odd under ξ ↦ −ξ):
+/// (docs/model.md §4 equations) the divisor P_1 + P_2 + P_3 moves linearly under the Prym
+/// differentials du/(vξ), u du/(vξ) (the holomorphic differentials of Γ odd under ξ ↦ −ξ):
 ///   Σ_j u̇_j/(v_j ξ_j) = −2i/κ,   Σ_j u_j u̇_j/(v_j ξ_j) = 0,
 /// so the Abel–Prym sums Σ_j ∫^{P_j} (1, u) du/(vξ) are (−2i t/κ, 0) plus constants — on every
 /// level, f = 0 included (docs/integrable.md, "Brun's case, level f ≠ 0"). The points are complex
@@ -74,8 +74,8 @@ struct BrunPrymRate {
 BrunPrymRate brun_prym_rate(const BrunCurve& k, const State& s, const State& ds);
 
 /// The Hamiltonian vector field of Brun's integral c = |m|² − λκ γ·I⁻¹γ at a body-frame state
-/// (bracket of spec §4): ṁ = m × 2m + γ × ∂c/∂γ, γ̇ = γ × 2m. It commutes with the motion, and
-/// along it the rates of the Abel–Prym sums are (0, −4i): the two flows of the Liouville torus
+/// (bracket of docs/model.md §4): ṁ = m × 2m + γ × ∂c/∂γ, γ̇ = γ × 2m. It commutes with the motion,
+/// and along it the rates of the Abel–Prym sums are (0, −4i): the two flows of the Liouville torus
 /// are both straight lines on the Prym.
 State brun_c_flow(const BrunCurve& k, const State& s);
 

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Equilibria of the body at rest (ω = 0) in the quadratic field (spec §7).
+/// Equilibria of the body at rest (ω = 0) in the quadratic field (docs/model.md §7).
 ///
 /// An equilibrium is a unit γ with γ × ∂V/∂γ = 0, i.e. M g r0 + λ Iγ = κ γ for a multiplier κ.
 /// Writing b = M g r0 and d_i = λ I_i: γ_i = b_i / (κ − d_i), where κ solves the secular equation
@@ -28,7 +28,7 @@ struct Equilibrium {
   double potential;  ///< V(γ)
   EquilibriumType type;
   Eigen::Vector2d hessian;  ///< eigenvalues of the Hessian of V on the sphere at γ (ascending)
-  /// γ·(Iγ × r0): zero because the Staude (Ampère) cone has a generator along γ (spec §7).
+  /// γ·(Iγ × r0): zero because the Staude (Ampère) cone has a generator along γ (docs/model.md §7).
   double staude_residual;
 };
 
@@ -64,7 +64,7 @@ struct EquilibriumSet {
 /// parameters written in a file to 15 digits must still count as exactly degenerate.
 inline constexpr double kEquilibriumDegeneracy = 1e-12;
 
-/// Coefficients (constant term first) of the secular polynomial of spec §7 in κ,
+/// Coefficients (constant term first) of the secular polynomial of docs/model.md §7 in κ,
 /// P(κ) = Σ_g β_g Π_{h≠g} (κ − d_h)² − Π_h (κ − d_h)², over the distinct values d_g of λ I_i whose
 /// components of b = M g r0 are not all zero, with β_g = Σ_{i: d_i = d_g} b_i². Degree 2·(number
 /// of such groups) ≤ 6; leading coefficient −1.
@@ -83,10 +83,11 @@ Eigen::Matrix2d sphere_hessian(const QuadraticModel& model, const Vec3& gamma, d
 /// Builds the Equilibrium record at a critical point γ (classifies it from sphere_hessian).
 Equilibrium make_equilibrium(const QuadraticModel& model, const Vec3& gamma);
 
-/// Every equilibrium of the model (spec §7): the roots of the secular polynomial (companion-matrix
-/// eigenvalues polished by Newton's method on Σ β_g/(κ − d_g)² = 1), the degenerate solutions
-/// κ = λ I_i where b_i = 0, circles of equilibria for symmetric bodies, and the case where V is
-/// constant. Requires k-independent input only (the gyrostat plays no role at rest).
+/// Every equilibrium of the model (docs/model.md §7): the roots of the secular polynomial
+/// (companion-matrix eigenvalues polished by Newton's method on Σ β_g/(κ − d_g)² = 1), the
+/// degenerate solutions κ = λ I_i where b_i = 0, circles of equilibria for symmetric bodies, and
+/// the case where V is constant. Requires k-independent input only (the gyrostat plays no role at
+/// rest).
 EquilibriumSet find_equilibria(const QuadraticModel& model);
 
 /// Fibonacci-lattice starts of the search on the sphere.

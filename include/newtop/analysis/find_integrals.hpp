@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Numerical search for first integrals polynomial in (ω, γ) (spec §5): an ansatz
+/// Numerical search for first integrals polynomial in (ω, γ) (docs/model.md §5): an ansatz
 /// I = Σ c_j μ_j(p, q, r, γ1, γ2, γ3) over all monomials of degree 1..D, the condition
 /// dI/dt = Σ c_j ∇μ_j · ẋ = 0 imposed at many random phase points, and the null space of that
 /// linear system found by SVD. Known integrals (energy, area, geometric, Brun, Lagrange and their
@@ -25,7 +25,7 @@ struct PotentialTerm {
 };
 
 /// A general polynomial potential V(γ) = Σ c γ1^i γ2^j γ3^k (a Field), for reproducing the theorem
-/// on quadratic integrals of spec §5.
+/// on quadratic integrals of docs/model.md §5.
 struct PolynomialPotential {
   std::vector<PotentialTerm> terms;
 };

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// The Lagrange-like case (spec §6): A = B, centre of mass on the symmetry axis (x0 = y0 = 0),
-/// k = (0, 0, k3). r is constant and γ3 obeys
+/// The Lagrange-like case (docs/model.md §6): A = B, centre of mass on the symmetry axis (x0 = y0 =
+/// 0), k = (0, 0, k3). r is constant and γ3 obeys
 ///   γ̇3² = F(γ3) = (1 − γ3²)(E − a γ3 − a1 γ3²) − (b − β γ3)²,
 /// E = (2h − C r² − λA)/A, a = 2Mg z0/A, a1 = λ(C − A)/A, b = f/A, β = (C r + k3)/A (= c r, c =
 /// C/A, when k3 = 0). γ3(t) is the elliptic function
@@ -18,9 +18,9 @@
 
 namespace newtop {
 
-/// The γ3 quartic F(u) = Σ coefficient[i] uⁱ and the parameters of spec §6.
+/// The γ3 quartic F(u) = Σ coefficient[i] uⁱ and the parameters of docs/model.md §6.
 struct LagrangeQuartic {
-  double E = 0, a = 0, a1 = 0, b = 0, c = 0;  ///< spec §6 (c = C/A)
+  double E = 0, a = 0, a1 = 0, b = 0, c = 0;  ///< docs/model.md §6 (c = C/A)
   double r = 0;                               ///< the constant r
   double beta = 0;                            ///< (C r + k3)/A
   std::array<double, 5> coefficient{};        ///< F(u) = Σ coefficient[i] uⁱ
@@ -48,10 +48,10 @@ struct LagrangeCase {
   Vec3 gyrostat;
 };
 
-/// True when the Lagrange-like case applies (the conditions of spec §5: lagrange_holds).
+/// True when the Lagrange-like case applies (the conditions of docs/model.md §5: lagrange_holds).
 bool lagrange_case_holds(const QuadraticModel& model);
 
-/// The quartic of spec §6 for the model and state.
+/// The quartic of docs/model.md §6 for the model and state.
 LagrangeQuartic lagrange_quartic(const QuadraticModel& model, const State& x0);
 
 /// The solution from x0. Throws InputError when the case does not apply or x0 is not a unit γ.

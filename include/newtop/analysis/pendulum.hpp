@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Plane pendulum motion (spec §10): with the centre of mass in the principal plane z0 = 0 and
-/// k1 = k2 = 0, the motion p = q = γ3 = 0 is invariant. With γ = (cos φ, −sin φ, 0) and φ̇ = r,
+/// Plane pendulum motion (docs/model.md §10): with the centre of mass in the principal plane z0 = 0
+/// and k1 = k2 = 0, the motion p = q = γ3 = 0 is invariant. With γ = (cos φ, −sin φ, 0) and φ̇ = r,
 ///   C φ̈ = Mg (x0 sin φ + y0 cos φ) − (λ/2)(B − A) sin 2φ,
 ///   V(φ) = Mg (x0 cos φ − y0 sin φ) + (λ/2)(A cos²φ + B sin²φ),  ½Cφ̇² + V(φ) = h.
 /// Pure gravity gradient (Mg r0 = 0): a pendulum in θ = 2φ (shifted by π when λ(B − A) < 0),
@@ -39,7 +39,7 @@ struct Pendulum {
   double c = 0, d = 0, alpha0 = 0;
 };
 
-/// V(φ) of spec §10.
+/// V(φ) of docs/model.md §10.
 double pendulum_potential(const Pendulum& p, double phi);
 
 /// True when the plane motion applies to (model, x0): Mg z0 = 0, k1 = k2 = 0 and p = q = γ3 = 0 at

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Uniform (permanent) rotations ω = Ω γ of a body without rotor (k = 0) in the quadratic field
-/// (spec §8). Condition: γ × ((Ω² − λ) Iγ − M g r0) = 0.
+/// (docs/model.md §8). Condition: γ × ((Ω² − λ) Iγ − M g r0) = 0.
 
 #include <optional>
 #include <vector>
@@ -17,10 +17,10 @@ inline State permanent_rotation(const Body& body, const Vec3& gamma, double Omeg
   return state_from_omega(body, Omega * gamma, gamma);
 }
 
-/// γ·(Iγ × r0): zero on the Staude (Ampère) cone of admissible axes (spec §7, §8).
+/// γ·(Iγ × r0): zero on the Staude (Ampère) cone of admissible axes (docs/model.md §7, §8).
 double staude_cone(const Body& body, const Vec3& gamma);
 
-/// Ω² along an axis γ of the Staude cone that is not a principal axis (spec §8):
+/// Ω² along an axis γ of the Staude cone that is not a principal axis (docs/model.md §8):
 /// Ω² = λ + M g (γ × r0)·(γ × Iγ) / |γ × Iγ|². NaN where γ × Iγ = 0 (a principal axis).
 double cone_omega_squared(const QuadraticModel& model, const Vec3& gamma);
 
@@ -31,7 +31,7 @@ struct ConeAxis {
   bool admissible;
 };
 
-/// The families of permanent rotations of a model (spec §8).
+/// The families of permanent rotations of a model (docs/model.md §8).
 struct RotationFamilies {
   /// Principal axes ±e_i about which the body spins uniformly at every Ω (r0 = 0, or M g r0
   /// along e_i).
@@ -52,11 +52,11 @@ inline constexpr double kRotationDegeneracy = 1e-12;
 /// 1e5 samples give at most 8e5 axes (32 MB, a 50 MB CSV), far more than any plot needs.
 inline constexpr int kMaxRotationSamples = 100000;
 
-/// The rotation families of spec §8, with the cone sampled at about `samples` points per curve
-/// (2 ≤ samples ≤ kMaxRotationSamples, otherwise InputError naming the bound):
-/// γ(τ) ∝ (I − τE)⁻¹ r0 for τ ∈ ℝ (each τ a generator, τ → ±∞ gives r0 itself), plus the extra
-/// plane spanned by e_i and (I − I_i E)⁻¹ r0 where x0_i = 0. Throws InputError for a body with a
-/// rotor (k ≠ 0), whose rotations are outside spec §8.
+/// The rotation families of docs/model.md §8, with the cone sampled at about `samples` points per
+/// curve (2 ≤ samples ≤ kMaxRotationSamples, otherwise InputError naming the bound): γ(τ) ∝ (I −
+/// τE)⁻¹ r0 for τ ∈ ℝ (each τ a generator, τ → ±∞ gives r0 itself), plus the extra plane spanned by
+/// e_i and (I − I_i E)⁻¹ r0 where x0_i = 0. Throws InputError for a body with a rotor (k ≠ 0),
+/// whose rotations are outside docs/model.md §8.
 RotationFamilies permanent_rotations(const QuadraticModel& model, int samples);
 
 /// The permanent rotations in the model's own field: permanent_rotations(QuadraticModel) for the

@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// Stability of equilibria and permanent rotations (fixed points of the Euler–Poisson equations,
-/// spec §7–§9): linearisation reduced to the symplectic leaf, energy–Casimir test, Beletsky's
-/// threshold for the spin about the radius vector.
+/// docs/model.md §7–§9): linearisation reduced to the symplectic leaf, energy–Casimir test,
+/// Beletsky's threshold for the spin about the radius vector.
 
 #include <complex>
 #include <optional>
@@ -15,7 +15,7 @@ namespace newtop {
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 using LeafBasis = Eigen::Matrix<double, 6, 4>;
 
-/// Jacobian of rhs(model, ·) with respect to x = (m, γ) (spec §4):
+/// Jacobian of rhs(model, ·) with respect to x = (m, γ) (docs/model.md §4):
 /// [[ [m]× I⁻¹ − [ω]×,  ∂L/∂γ ], [ [γ]× I⁻¹,  −[ω]× ]], with [a]× v = a × v and ∂L/∂γ =
 /// [γ]× ∂²V/∂γ² − [∂V/∂γ]× the moment Jacobian of the model's own field (λI for ∂²V/∂γ² in the
 /// quadratic field).
@@ -57,10 +57,10 @@ struct PolishedFixedPoint {
 };
 
 /// Newton's method (least-norm Gauss–Newton steps, SVD) for the fixed point of the Euler–Poisson
-/// equations nearest to s (spec §7, §8): rhs(m, γ) = 0 with |γ| = 1. A state at rest (ω = 0) stays
-/// at rest and only γ moves (γ × ∂V/∂γ = 0); otherwise m and γ both move, the step of least norm
-/// in (m/|m|, γ), so that a spin keeps its Ω where the fixed points form a family in Ω. Stops when
-/// the residual (plus ||γ| − 1|) stops decreasing, after at most 50 steps.
+/// equations nearest to s (docs/model.md §7, §8): rhs(m, γ) = 0 with |γ| = 1. A state at rest (ω =
+/// 0) stays at rest and only γ moves (γ × ∂V/∂γ = 0); otherwise m and γ both move, the step of
+/// least norm in (m/|m|, γ), so that a spin keeps its Ω where the fixed points form a family in Ω.
+/// Stops when the residual (plus ||γ| − 1|) stops decreasing, after at most 50 steps.
 PolishedFixedPoint polish_fixed_point(const Model& model, const State& s);
 
 /// A real part below this fraction of the reduced Jacobian's norm counts as zero. A non-trivial

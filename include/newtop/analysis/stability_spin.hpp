@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// Spin about a principal axis pointing at the centre (spec §9): Beletsky's closed form, the
-/// characteristic polynomial with the centre of mass on the axis, numerical thresholds and scans.
+/// Spin about a principal axis pointing at the centre (docs/model.md §9): Beletsky's closed form,
+/// the characteristic polynomial with the centre of mass on the axis, numerical thresholds and
+/// scans.
 
 #include <optional>
 #include <vector>
@@ -21,21 +22,22 @@ AxisClass axis_class(const Body& body, int axis);
 /// when M g r0 is along e_axis (always for r0 = 0).
 State principal_spin(const Body& body, int axis, double Omega);
 
-/// Moments relabelled so that the spin axis plays C (spec §9): (A, B, C) = (I_j, I_k, I_axis) with
-/// (axis, j, k) cyclic.
+/// Moments relabelled so that the spin axis plays C (docs/model.md §9): (A, B, C) = (I_j, I_k,
+/// I_axis) with (axis, j, k) cyclic.
 Vec3 spin_frame_moments(const Body& body, int axis);
 
 /// Coefficients (1, −[(a + b)λ − (1 + ab)Ω²], ab (λ − Ω²)²) of Beletsky's quadratic in σ = s²
-/// (spec §9, r0 = 0), a = (C − B)/A, b = (C − A)/B in the spin frame.
+/// (docs/model.md §9, r0 = 0), a = (C − B)/A, b = (C − A)/B in the spin frame.
 Eigen::Vector3d beletsky_polynomial(const Body& body, double lambda, int axis, double Omega);
 
-/// Ω* = √λ (√a + √b)/(1 + √(ab)) (spec §9): the spin is linearly stable for Ω > Ω* and unstable
-/// below. Defined for λ > 0 when the spin axis has the largest moment (a, b ≥ 0, a + b > 0);
-/// nullopt otherwise (least: stable for all Ω; middle: unstable except Ω = √λ).
+/// Ω* = √λ (√a + √b)/(1 + √(ab)) (docs/model.md §9): the spin is linearly stable for Ω > Ω* and
+/// unstable below. Defined for λ > 0 when the spin axis has the largest moment (a, b ≥ 0, a + b >
+/// 0); nullopt otherwise (least: stable for all Ω; middle: unstable except Ω = √λ).
 std::optional<double> beletsky_threshold(const Body& body, double lambda, int axis);
 
-/// Coefficients (c, 0, β, 0, AB) (constant term first) of the quartic AB s⁴ + β s² + c of spec §9,
-/// the characteristic polynomial on the leaf with r0 = z0 e_z (spin frame), k_z = M g z0.
+/// Coefficients (c, 0, β, 0, AB) (constant term first) of the quartic AB s⁴ + β s² + c of
+/// docs/model.md §9, the characteristic polynomial on the leaf with r0 = z0 e_z (spin frame), k_z =
+/// M g z0.
 Eigen::Matrix<double, 5, 1> axis_spin_polynomial(const QuadraticModel& model, int axis,
                                                  double Omega);
 
@@ -43,8 +45,8 @@ Eigen::Matrix<double, 5, 1> axis_spin_polynomial(const QuadraticModel& model, in
 Spectrum spin_stability(const QuadraticModel& model, int axis, double Omega);
 
 /// Upper end of the Ω range searched by numeric_threshold: 8 (√(|λ| max I / min I) +
-/// √(|M g r0| max I) / min I), above every threshold of spec §9 (Ω* ≤ 2√λ; the sleeping top's
-/// 2√(A M g z0)/C).
+/// √(|M g r0| max I) / min I), above every threshold of docs/model.md §9 (Ω* ≤ 2√λ; the sleeping
+/// top's 2√(A M g z0)/C).
 double spin_omega_range(const QuadraticModel& model);
 
 /// Ω ≥ 0 above which the spin stays linearly stable up to spin_omega_range: found by sampling

@@ -1,9 +1,10 @@
 #pragma once
 /// \file
-/// The exact field of a centre on an extended body (spec §2) and the quantities derived from it:
-/// V(γ; R) = −μ ∫ dm / |Rγ + ρ|, ∂V/∂γ, ∂V/∂R, the moment L, the resultant force F, the Hessian
-/// ∂²V/∂γ² and the moment's Jacobian ∂L/∂γ. A field here satisfies the Field concept (potential
-/// and grad_gamma found by ADL) and has its own moment(), so every integrator runs in it.
+/// The exact field of a centre on an extended body (docs/model.md §2) and the quantities derived
+/// from it: V(γ; R) = −μ ∫ dm / |Rγ + ρ|, ∂V/∂γ, ∂V/∂R, the moment L, the resultant force F, the
+/// Hessian ∂²V/∂γ² and the moment's Jacobian ∂L/∂γ. A field here satisfies the Field concept
+/// (potential and grad_gamma found by ADL) and has its own moment(), so every integrator runs in
+/// it.
 
 #include <memory>
 
@@ -16,7 +17,7 @@ namespace newtop {
 class MassMoments;
 
 /// V, ∂V/∂γ (γ a free vector of R³), ∂V/∂R, L = γ × ∂V/∂γ and
-/// F = −(∂V/∂R) γ + (1/R) γ × (γ × ∂V/∂γ) at one γ (spec §2).
+/// F = −(∂V/∂R) γ + (1/R) γ × (γ × ∂V/∂γ) at one γ (docs/model.md §2).
 struct FieldValues {
   double potential = 0.0;
   Vec3 grad_gamma = Vec3::Zero();
@@ -25,7 +26,7 @@ struct FieldValues {
   Vec3 force = Vec3::Zero();
 };
 
-/// The quantities of spec §2 at γ from the attraction at x = −R P γ (P = axes): V = −μΦ,
+/// The quantities of docs/model.md §2 at γ from the attraction at x = −R P γ (P = axes): V = −μΦ,
 /// ∂V/∂γ = μR Pᵀ∇Φ, ∂V/∂R = μ (Pγ)·∇Φ, L = μ Pᵀ (∇Φ × x) (the attraction's cancellation-free
 /// moment), F = −(∂V/∂R) γ + γ × L / R (= −(∂V/∂R) γ + γ × (γ × ∂V/∂γ)/R).
 FieldValues field_values_at(const Attraction& a, double mu, double R, const Mat3& axes,

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Mass models of an extended body (spec §2): point masses, a homogeneous polyhedron, a homogeneous
-/// ellipsoid and box. Each gives its mass properties at O and the Newtonian potential
+/// Mass models of an extended body (docs/model.md §2): point masses, a homogeneous polyhedron, a
+/// homogeneous ellipsoid and box. Each gives its mass properties at O and the Newtonian potential
 /// Φ(x) = ∫ dm / |x − ρ| (unit gravitational constant) with its gradient, from which the exact
 /// field of a centre at x = −Rγ follows (newtop/exact/exact_field.hpp).
 

@@ -1,10 +1,10 @@
 #pragma once
 /// \file
-/// Multipole expansion of the exact field (spec §3) to any order in 1/R:
+/// Multipole expansion of the exact field (docs/model.md §3) to any order in 1/R:
 /// 1/|x + ρ| = Σ_α c_α(x) ρ^α with c_α the Taylor coefficients of 1/|x| (x = Rγ), so
 /// V_p(γ; R) = −μ Σ_{|α| ≤ p−1} M_α c_α(Rγ), where M_α = ∫ ρ^α dm are the mass moments. The terms
 /// of degree n = |α| fall as R^−(n+1); order p keeps 1/R … 1/R^p. Order 3 is the quadratic model
-/// of spec §3 with its γ-independent terms kept; order 4 adds the octupole.
+/// of docs/model.md §3 with its γ-independent terms kept; order 4 adds the octupole.
 
 #include <memory>
 #include <vector>

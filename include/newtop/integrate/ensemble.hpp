@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// The ensemble stepper: many trajectories of one quadratic-field model (spec §3) advanced in
-/// lockstep by a Lie–Poisson splitting method (splitting.hpp), in structure-of-arrays form, one
+/// The ensemble stepper: many trajectories of one quadratic-field model (docs/model.md §3) advanced
+/// in lockstep by a Lie–Poisson splitting method (splitting.hpp), in structure-of-arrays form, one
 /// trajectory per lane of a SIMD register (AVX-512: 8 doubles, AVX2: 4, portable: 2), the
 /// instruction set chosen at run time from what the CPU has.
 ///

@@ -1,10 +1,10 @@
 #pragma once
 /// \file
-/// The exact flow of the free rigid body H = ½ m·I⁻¹m (Euler–Poinsot, spec §4), and a splitting
-/// stepper that uses it as a sub-flow: free body + potential kick. The angular momentum m(t) is
-/// given by Jacobi elliptic functions and the attitude γ(t) by Euler angles about the (space-fixed)
-/// angular momentum, the precession angle in closed form through the elliptic integral of the
-/// third kind (Carlson's R_F and R_J; Boost.Math in double precision throughout).
+/// The exact flow of the free rigid body H = ½ m·I⁻¹m (Euler–Poinsot, docs/model.md §4), and a
+/// splitting stepper that uses it as a sub-flow: free body + potential kick. The angular momentum
+/// m(t) is given by Jacobi elliptic functions and the attitude γ(t) by Euler angles about the
+/// (space-fixed) angular momentum, the precession angle in closed form through the elliptic
+/// integral of the third kind (Carlson's R_F and R_J; Boost.Math in double precision throughout).
 
 #include "newtop/integrate/composition_tables.hpp"
 #include "newtop/integrate/splitting.hpp"

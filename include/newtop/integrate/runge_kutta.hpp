@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Runge–Kutta methods through Boost.Odeint on the Euler–Poisson right-hand side (spec §4):
-/// classical RK4 (fixed step, the baseline) and the embedded pairs Dormand–Prince 5(4) and
+/// Runge–Kutta methods through Boost.Odeint on the Euler–Poisson right-hand side (docs/model.md
+/// §4): classical RK4 (fixed step, the baseline) and the embedded pairs Dormand–Prince 5(4) and
 /// Fehlberg 7(8) with absolute and relative tolerances, each with a continuous extension (dense
 /// output) of its accepted steps.
 ///

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// Lie–Poisson splitting of H(m, γ) = H_free(m) + V(γ) (spec §4) into exactly solvable flows: the
-/// free body H_free = Σ_i ½(m_i − k_i)²/I_i and the potential kick m += t γ × ∂V/∂γ. A step is
+/// Lie–Poisson splitting of H(m, γ) = H_free(m) + V(γ) (docs/model.md §4) into exactly solvable
+/// flows: the free body H_free = Σ_i ½(m_i − k_i)²/I_i and the potential kick m += t γ × ∂V/∂γ. A
+/// step is
 ///   K(b₀h) T(a₁h) K(b₁h) … T(a_s h) K(b_s h),
 /// with T the free-body flow (split into axis rotations, or solved exactly) and the coefficients
 /// taken from a CompositionTable. Every sub-flow preserves γ·γ and m·γ exactly and is a Poisson

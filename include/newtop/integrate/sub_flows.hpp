@@ -1,8 +1,8 @@
 #pragma once
 /// \file
-/// The exact sub-flows of the Lie–Poisson splitting (spec §4), as explicit operations on a phase
-/// point (m, γ) held as plain numbers in a working frame (the body axes relabelled by a proper
-/// signed permutation, so that every formula keeps its form):
+/// The exact sub-flows of the Lie–Poisson splitting (docs/model.md §4), as explicit operations on a
+/// phase point (m, γ) held as plain numbers in a working frame (the body axes relabelled by a
+/// proper signed permutation, so that every formula keeps its form):
 ///
 /// - rotation about the working axis e_i by an angle θ: the flow of a function of m_i alone
 ///   (½(m_i − k_i)²/I_i, or ½α m_i² + β m_i); m and γ turn alike, m_i is constant;

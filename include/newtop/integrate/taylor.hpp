@@ -1,9 +1,9 @@
 #pragma once
 /// \file
-/// Taylor's method on the Euler–Poisson equations of the quadratic field (spec §3, §4): the
-/// coefficients x^[n] = x^(n)(t)/n! of the solution through a point, to an order p chosen from the
-/// tolerance, from the recurrences of the right-hand side (Cauchy products of the series of ω, γ
-/// and q; the equations are quadratic), and the step from the size of the last two coefficients
+/// Taylor's method on the Euler–Poisson equations of the quadratic field (docs/model.md §3, §4):
+/// the coefficients x^[n] = x^(n)(t)/n! of the solution through a point, to an order p chosen from
+/// the tolerance, from the recurrences of the right-hand side (Cauchy products of the series of ω,
+/// γ and q; the equations are quadratic), and the step from the size of the last two coefficients
 /// (Jorba & Zou 2005). Every step is accepted; the series is the method's continuous extension.
 
 #include <array>

@@ -1,12 +1,12 @@
 #pragma once
 /// \file
-/// The attitude of the body (spec §4 loses it: (m, γ) does not see a rotation about the fixed
-/// direction e). R ∈ SO(3) maps body coordinates to inertial ones, x_inertial = R x_body, and is
-/// held as the unit quaternion q of Eigen (q x q* = R x; coefficients written scalar first,
-/// (w, x, y, z), everywhere newtop reads or writes them). The direction e from the centre towards
-/// the body is fixed in space and γ = Rᵀ e, so a state with an attitude fixes e = R γ. The rows of
-/// R are the inertial axes seen from the body, Rᵀ e_a: they move exactly as γ does
-/// (γ̇ = γ × ω), and R obeys Ṙ = R [ω]×, q̇ = ½ q ⊗ (0, ω).
+/// The attitude of the body (docs/model.md §4 loses it: (m, γ) does not see a rotation about the
+/// fixed direction e). R ∈ SO(3) maps body coordinates to inertial ones, x_inertial = R x_body, and
+/// is held as the unit quaternion q of Eigen (q x q* = R x; coefficients written scalar first, (w,
+/// x, y, z), everywhere newtop reads or writes them). The direction e from the centre towards the
+/// body is fixed in space and γ = Rᵀ e, so a state with an attitude fixes e = R γ. The rows of R
+/// are the inertial axes seen from the body, Rᵀ e_a: they move exactly as γ does (γ̇ = γ × ω), and R
+/// obeys Ṙ = R [ω]×, q̇ = ½ q ⊗ (0, ω).
 ///
 /// Euler angles (radians; docs/scenario.md):
 /// - 3-2-1 (ψ, θ, φ): R = R_z(ψ) R_y(θ) R_x(φ) (yaw, pitch, roll about the body's axes as they

@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// BasicModel<F> (body + one concrete field) and State (m, γ) of the Euler–Poisson equations
-/// (spec §4): the monomorphic view the steppers and kernels run on. newtop/model/model.hpp holds
-/// Model, the model of a run whatever its field.
+/// (docs/model.md §4): the monomorphic view the steppers and kernels run on. newtop/model/model.hpp
+/// holds Model, the model of a run whatever its field.
 
 #include <concepts>
 
@@ -27,12 +27,12 @@ struct BasicModel {
   F field;
 };
 
-/// The model of the book: the quadratic field of spec §3 (closed forms, the integrals of spec §5,
-/// the analytic cases).
+/// The model of the book: the quadratic field of docs/model.md §3 (closed forms, the integrals of
+/// docs/model.md §5, the analytic cases).
 using QuadraticModel = BasicModel<QuadraticField>;
 
-/// Phase-space point of the Lie–Poisson form (spec §4): angular momentum m = Iω + k and the unit
-/// vector γ along O′→O, both in the body frame. Time travels beside it.
+/// Phase-space point of the Lie–Poisson form (docs/model.md §4): angular momentum m = Iω + k and
+/// the unit vector γ along O′→O, both in the body frame. Time travels beside it.
 struct State {
   Vec3 m = Vec3::Zero();
   Vec3 gamma = Vec3::UnitZ();
@@ -106,8 +106,8 @@ concept FieldWithMoment = Field<F> && requires(const Body& b, const F& f, const 
   { moment(b, f, g) } -> std::convertible_to<Vec3>;
 };
 
-/// Moment about O, L = γ × ∂V/∂γ (spec §2), for any field: the field's own moment where it has
-/// one, the cross product otherwise.
+/// Moment about O, L = γ × ∂V/∂γ (docs/model.md §2), for any field: the field's own moment where it
+/// has one, the cross product otherwise.
 template <Field F>
 Vec3 moment(const BasicModel<F>& model, const Vec3& gamma) {
   if constexpr (FieldWithMoment<F>) {
@@ -127,8 +127,8 @@ MomentAndDerivative moment_with_derivative(const BasicModel<F>& model, const Vec
   }
 }
 
-/// Time derivative of the state (spec §4): ṁ = m × ω + γ × ∂V/∂γ, γ̇ = γ × ω, with ω = I⁻¹(m − k).
-/// Equivalent to I ω̇ + ω × (Iω + k) = γ × ∂V/∂γ, γ̇ + ω × γ = 0.
+/// Time derivative of the state (docs/model.md §4): ṁ = m × ω + γ × ∂V/∂γ, γ̇ = γ × ω, with ω =
+/// I⁻¹(m − k). Equivalent to I ω̇ + ω × (Iω + k) = γ × ∂V/∂γ, γ̇ + ω × γ = 0.
 template <Field F>
 State rhs(const BasicModel<F>& model, const State& s) {
   const Vec3 w = omega(model.body, s);

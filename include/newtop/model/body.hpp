@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// The rigid body (spec §1): principal moments A, B, C at the fixed point O, mass M, centre of mass
-/// r0 and gyrostatic moment k, all in the principal axes Oxyz.
+/// The rigid body (docs/model.md §1): principal moments A, B, C at the fixed point O, mass M,
+/// centre of mass r0 and gyrostatic moment k, all in the principal axes Oxyz.
 
 #include "newtop/core/types.hpp"
 

@@ -1,14 +1,14 @@
 #pragma once
 /// \file
-/// The approximate (quadratic) field of spec §3: V(γ) = M g r0·γ + ½ λ γ·Iγ.
+/// The approximate (quadratic) field of docs/model.md §3: V(γ) = M g r0·γ + ½ λ γ·Iγ.
 
 #include "newtop/model/body.hpp"
 
 namespace newtop {
 
-/// Field of a distant centre truncated at 1/R³ (spec §3). g (field intensity at O) and λ have
-/// either sign: Newtonian centre g > 0, λ = 3g/R; Coulomb centre any signs; uniform gravity λ = 0;
-/// Brun's field λ = −N. Plain data; use the named constructors to get the checked variants.
+/// Field of a distant centre truncated at 1/R³ (docs/model.md §3). g (field intensity at O) and λ
+/// have either sign: Newtonian centre g > 0, λ = 3g/R; Coulomb centre any signs; uniform gravity λ
+/// = 0; Brun's field λ = −N. Plain data; use the named constructors to get the checked variants.
 struct QuadraticField {
   double g = 0.0;
   double lambda_ = 0.0;
@@ -21,19 +21,20 @@ struct QuadraticField {
   static QuadraticField from_mu_R(double mu, double R);
   /// Uniform gravity of intensity g (classical heavy top): λ = 0.
   static QuadraticField uniform(double g);
-  /// Brun's field (spec §3): each element pushed ∝ its mass and its distance to a plane with unit
-  /// normal γ, at signed distance d from O along γ. V = ½N ∫ (ρ·γ − d)² dm = −½N γ·Iγ − N d M r0·γ
+  /// Brun's field (docs/model.md §3): each element pushed ∝ its mass and its distance to a plane
+  /// with unit normal γ, at signed distance d from O along γ. V = ½N ∫ (ρ·γ − d)² dm = −½N γ·Iγ − N
+  /// d M r0·γ
   /// + const, i.e. λ = −N and g = −N d (d = 0: the plane passes through O).
   static QuadraticField brun(double N, double plane_offset = 0.0);
 };
 
-/// V(γ) = M g r0·γ + ½ λ γ·Iγ (spec §3), the γ-dependent part of the potential.
+/// V(γ) = M g r0·γ + ½ λ γ·Iγ (docs/model.md §3), the γ-dependent part of the potential.
 inline double potential(const Body& body, const QuadraticField& field, const Vec3& gamma) {
   return body.mass() * field.g * body.center_of_mass().dot(gamma) +
          0.5 * field.lambda_ * gamma.dot(body.inertia().cwiseProduct(gamma));
 }
 
-/// ∂V/∂γ = M g r0 + λ Iγ (spec §4).
+/// ∂V/∂γ = M g r0 + λ Iγ (docs/model.md §4).
 inline Vec3 grad_gamma(const Body& body, const QuadraticField& field, const Vec3& gamma) {
   return body.mass() * field.g * body.center_of_mass() +
          field.lambda_ * body.inertia().cwiseProduct(gamma);
@@ -44,7 +45,7 @@ inline Mat3 hessian_gamma(const Body& body, const QuadraticField& field, const V
   return field.lambda_ * body.inertia_matrix();
 }
 
-/// Moment of the field about O: L = γ × ∂V/∂γ (spec §2).
+/// Moment of the field about O: L = γ × ∂V/∂γ (docs/model.md §2).
 inline Vec3 moment(const Body& body, const QuadraticField& field, const Vec3& gamma) {
   return gamma.cross(grad_gamma(body, field, gamma));
 }

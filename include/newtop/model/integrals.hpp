@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// First integrals of the Euler–Poisson equations (spec §5).
+/// First integrals of the Euler–Poisson equations (docs/model.md §5).
 
 #include <optional>
 #include <string>
@@ -23,17 +23,17 @@ inline double area(const State& s) { return s.m.dot(s.gamma); }
 /// I3 = γ·γ = 1: the geometric integral (a Casimir).
 inline double geometric(const State& s) { return s.gamma.squaredNorm(); }
 
-/// Brun's integral (spec §5), I4 = |Iω|² − λ ABC γ·I⁻¹γ
+/// Brun's integral (docs/model.md §5), I4 = |Iω|² − λ ABC γ·I⁻¹γ
 ///   = A²p² + B²q² + C²r² − λ(BC γ1² + CA γ2² + AB γ3²); conserved when r0 = 0 and k = 0.
 double brun(const QuadraticModel& model, const State& s);
 
-/// Lagrange's integral (spec §5), I4 = C r + k3 = m3; conserved when A = B, x0 = y0 = 0 and
-/// k = (0, 0, k3).
+/// Lagrange's integral (docs/model.md §5), I4 = C r + k3 = m3; conserved when A = B, x0 = y0 = 0
+/// and k = (0, 0, k3).
 double lagrange(const QuadraticModel& model, const State& s);
 
-/// Relative tolerance with which the conditions of spec §5 (A = B, x0 = y0 = 0, k1 = k2 = 0, r0 =
-/// 0) are recognised: parameters written in a file to 15 digits and converted to binary must still
-/// count as equal.
+/// Relative tolerance with which the conditions of docs/model.md §5 (A = B, x0 = y0 = 0, k1 = k2 =
+/// 0, r0 = 0) are recognised: parameters written in a file to 15 digits and converted to binary
+/// must still count as equal.
 inline constexpr double kConditionTolerance = 1e-12;
 
 /// True when Brun's integral holds for the model: M g r0 = 0 (no linear term) and k = 0.
@@ -54,7 +54,7 @@ struct IntegralValues {
   std::optional<double> lagrange;
 };
 
-/// All integrals of spec §5 at s; brun and lagrange filled only where they hold.
+/// All integrals of docs/model.md §5 at s; brun and lagrange filled only where they hold.
 IntegralValues integrals(const QuadraticModel& model, const State& s);
 
 /// Integrals for any field: energy, area and geometric (the extra integrals need the quadratic

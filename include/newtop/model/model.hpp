@@ -1,10 +1,10 @@
 #pragma once
 /// \file
-/// Model: the body and the field of a run, whatever the field (spec §2–§4). The field is a value
-/// that is any of the quadratic field of spec §3, the exact field of a mass model (spec §2) or its
-/// multipole expansion; the body of an exact or multipole field is always the mass model's own
-/// (one source of mass properties). The steppers and kernels run on the concrete BasicModel<F>
-/// that visit_model() hands them, so their loops stay monomorphic.
+/// Model: the body and the field of a run, whatever the field (docs/model.md §2–§4). The field is a
+/// value that is any of the quadratic field of docs/model.md §3, the exact field of a mass model
+/// (docs/model.md §2) or its multipole expansion; the body of an exact or multipole field is always
+/// the mass model's own (one source of mass properties). The steppers and kernels run on the
+/// concrete BasicModel<F> that visit_model() hands them, so their loops stay monomorphic.
 
 #include <memory>
 #include <string>
@@ -25,7 +25,7 @@ class Model {
  public:
   using Variant = std::variant<QuadraticModel, BasicModel<ExactField>, BasicModel<MultipoleField>>;
 
-  /// The quadratic field of spec §3 on a body given by its mass properties.
+  /// The quadratic field of docs/model.md §3 on a body given by its mass properties.
   Model(const Body& body, const QuadraticField& field) : v_(QuadraticModel{body, field}) {}
   /// The same, from the quadratic view (implicit: a quadratic model is a model).
   Model(const QuadraticModel& m) : v_(m) {}  // NOLINT(google-explicit-constructor)

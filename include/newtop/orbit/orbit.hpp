@@ -10,9 +10,9 @@
 namespace newtop {
 
 /// Circular orbit: the centre → body line turns about the orbit normal n at the constant rate ω0,
-/// and the gravity gradient has the constant strength λ = 3μ/R³ (spec §3). On a Kepler orbit
-/// λ = 3ω0²; `forced` lifts that tie for a centre of mass held on its circle by other forces (and
-/// for the limit ω0 → 0 at fixed λ, the fixed-centre model of spec §4).
+/// and the gravity gradient has the constant strength λ = 3μ/R³ (docs/model.md §3). On a Kepler
+/// orbit λ = 3ω0²; `forced` lifts that tie for a centre of mass held on its circle by other forces
+/// (and for the limit ω0 → 0 at fixed λ, the fixed-centre model of docs/model.md §4).
 struct CircularOrbit {
   double rate = 0.0;     ///< ω0 [1/time], the orbit's angular velocity about n
   double lambda_ = 0.0;  ///< λ = 3μ/R³ [1/time²]

@@ -37,7 +37,7 @@ inline Mat3 cross_matrix(const Vec3& v) {
   return c;
 }
 
-/// Df(x): the Jacobian of the Euler–Poisson vector field (spec §4) in the order (m, γ):
+/// Df(x): the Jacobian of the Euler–Poisson vector field (docs/model.md §4) in the order (m, γ):
 /// ∂ṁ/∂m = [m]× I⁻¹ − [ω]×, ∂ṁ/∂γ = ∂L/∂γ, ∂γ̇/∂m = [γ]× I⁻¹, ∂γ̇/∂γ = −[ω]×.
 template <Field F>
 Eigen::Matrix<double, 6, 6> rhs_jacobian(const BasicModel<F>& model, const State& x) {
