@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from . import _sphere, results
-from ._common import EPS, new_figure
+from ._common import EPS, new_figure, scenario_parameters
 from .results import Result, UnrecognisedResult
 
 QUADRATIC_NOTE = "V = M g r0·γ + ½ λ γ·Iγ (docs/model.md §3)"
@@ -193,8 +193,9 @@ def omega_scan_figure(res: Result):
     return fig
 
 
-def stability_map_figure(res: Result):
-    """The two-parameter diagram of ``stability --scan P1=..,P2=..``: the verdict at each point."""
+def stability_map_figure(res: Result, scenario=None):
+    """The two-parameter diagram of ``stability --scan P1=..,P2=..``: the verdict at each point;
+    with the scenario, the title gives the values of the parameters that are held fixed."""
     names = list(res.columns)
     x, y, verdict = res.columns[names[0]], res.columns[names[1]], res.columns["verdict"]
     xs, ys = np.unique(x), np.unique(y)
@@ -218,7 +219,9 @@ def stability_map_figure(res: Result):
               fontsize="small", loc="upper left")
     ax.set_xlabel(names[0])
     ax.set_ylabel(names[1])
-    ax.set_title(f"Stability of the spin about the radius vector over ({names[0]}, {names[1]})")
+    title = f"Stability of the spin about the radius vector over ({names[0]}, {names[1]})"
+    fixed = scenario_parameters(scenario, exclude=(names[0], names[1]))
+    ax.set_title(title + (f"\nfixed: {fixed}" if fixed else ""), fontsize="medium")
     return fig
 
 
