@@ -158,7 +158,7 @@ def phase_figures(g: Gallery):
 
 
 def other_figures(g: Gallery):
-    c = g.json("analytic.json", "analytic", example("analytic_lagrange.toml"), "--samples", "80")
+    c = g.json("analytic.json", "analytic", example("analytic_lagrange.toml"), "--samples", "400")
     g.add("analytic_lagrange.png", plot.figure(results.load(g.file("analytic.json"))), [c],
           ["closed form (lines), rkf78 (dots)", "Difference"], ["t"])
     c = g.json("find_integrals.json", "find-integrals", example("brun.toml"))

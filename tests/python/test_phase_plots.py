@@ -194,3 +194,29 @@ def test_plot_command_line_refuses_a_missing_scenario(tmp_path, capsys):
     assert plot.main([str(p), "-o", str(tmp_path / "s.png"), "--scenario",
                       str(tmp_path / "none.toml")]) == 2
     assert "--scenario" in capsys.readouterr().err
+
+
+def analytic_json(tmp_path, samples):
+    # a spin of rate 20 about e3 with γ turning in the xy plane: γ1 = cos 20t, γ2 = −sin 20t
+    t = np.linspace(0.0, 2.0, samples)
+    rows = [{"t": x, "analytic": {"omega": [0, 0, 20.0], "gamma": [np.cos(20 * x), -np.sin(20 * x),
+                                                                    0.0]},
+             "numeric": {"omega": [0, 0, 20.0], "gamma": [np.cos(20 * x), -np.sin(20 * x), 0.0]}}
+            for x in t]
+    p = tmp_path / f"a{samples}.json"
+    p.write_text(json.dumps({"case": "lagrange", "samples": rows, "max_abs_error": 0.0}))
+    return p
+
+
+def test_analytic_closed_form_is_a_curve_only_where_the_samples_resolve_it(tmp_path):
+    # 2 time units at |ω| = 20: 40 rad; a curve needs a sample every 0.2 rad, 201 samples.
+    sparse = plot.figure(results.load(analytic_json(tmp_path, 50)))
+    ax = sparse.axes[1]
+    closed = [ln for ln in ax.get_lines() if ln.get_label().endswith("closed form")]
+    assert closed and all(ln.get_linestyle() == "None" for ln in closed)  # markers, no zig-zag
+    assert "circles" in ax.get_title() and "--samples 201 or more" in sparse._suptitle.get_text()
+    dense = plot.figure(results.load(analytic_json(tmp_path, 201)))
+    ax = dense.axes[1]
+    closed = [ln for ln in ax.get_lines() if ln.get_label().endswith("closed form")]
+    assert closed and all(ln.get_linestyle() == "-" for ln in closed)
+    assert "(lines)" in ax.get_title() and "too sparse" not in dense._suptitle.get_text()
