@@ -6,9 +6,9 @@
 #include <limits>
 
 #include "../io/file_check.hpp"
-#include "newtop/core/grid.hpp"
 #include "../io/toml_parse.hpp"
 #include "../io/toml_reader.hpp"
+#include "newtop/core/grid.hpp"
 #include "newtop/io/suggest.hpp"
 #include "newtop/sweep/sweep.hpp"
 #include "sweep_points.hpp"

@@ -18,7 +18,8 @@ using newtop::test::run_newtop;
 const std::regex kNegativeZero(R"((^|[^0-9.eE])-0(\.0*)?([^0-9.eE]|$))");
 
 TEST(NegativeZero, AnalyticWritesTheLagrangeQuarticWithoutMinusZero) {
-  const auto json = run_newtop("analytic " + example_path("heavy_top.toml") + " --samples 3 --json");
+  const auto json =
+      run_newtop("analytic " + example_path("heavy_top.toml") + " --samples 3 --json");
   ASSERT_EQ(json.code, 0) << json.out;
   EXPECT_NE(json.out.find("\"a1\": 0"), std::string::npos) << json.out;
   EXPECT_FALSE(std::regex_search(json.out, kNegativeZero)) << json.out;
