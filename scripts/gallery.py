@@ -113,8 +113,10 @@ def analysis_figures(g: Gallery):
     grid = g.file("beletsky_map.csv")
     c = g.run("stability", example("stability_beletsky.toml"), "--axis", "z", "--scan",
               "omega=0:3:61,C=0.4:2.6:45", "--out", grid)[0]
-    g.add("stability_map.png", plot.figure(results.load(grid)), [c],
-          ["Stability of the spin about the radius vector over (omega, C)"], ["omega", "C"])
+    g.add("stability_map.png", plot.figure(results.load(grid),
+                                           scenario=example("stability_beletsky.toml")), [c],
+          ["Stability of the spin about the radius vector over (omega, C)",
+           "fixed: A = 1, B = 1.5; M = 1"], ["omega", "C"])
     cone = g.file("staude_cone.csv")
     c = g.json("rotations.json", "rotations", example("rotation_staude_cone.toml"), "--out", cone)
     g.add("staude_cone.png", plot.staude_cone_figure(results.load(cone),
@@ -142,15 +144,21 @@ def sweep_figures(g: Gallery):
 
 def phase_figures(g: Gallery):
     for name in ("section_brun", "section_chaotic"):
-        csv = g.file(name + ".csv")
-        c = g.run("section", example(name + ".toml"), "--surface", "gamma3 = 0", "--orbits", "12",
-                  "--out", csv)[0]
-        g.add(name + ".png", plot.figure(results.load(csv)), [c], ["Poincaré section"],
-              ["l", "L_over_G"])
+        c = g.json(name + ".json", "section", example(name + ".toml"), "--surface", "gamma3 = 0",
+                   "--orbits", "12")
+        g.add(name + ".png", plot.figure(results.load(g.file(name + ".json")),
+                                         scenario=example(name + ".toml")), [c],
+              ["Poincaré section", "h = ", "A = 1, B = 1.5, C = 2.2"],
+              ["ℓ = atan2(m1, m2), Andoyer angle (rad)", "L/G = m3/|m|"])
+    history = g.file("chaos_spectrum.csv")
+    c = g.run("chaos", example("section_chaotic.toml"), "--spectrum", "--t-end", "500", "--out",
+              history)[0]
+    g.add("chaos_spectrum.png", plot.figure(results.load(history)), [c],
+          ["the Lyapunov spectrum's history"], ["Lyapunov exponents", "megno", "t (log scale)"])
 
 
 def other_figures(g: Gallery):
-    c = g.json("analytic.json", "analytic", example("analytic_lagrange.toml"), "--samples", "80")
+    c = g.json("analytic.json", "analytic", example("analytic_lagrange.toml"), "--samples", "400")
     g.add("analytic_lagrange.png", plot.figure(results.load(g.file("analytic.json"))), [c],
           ["closed form (lines), rkf78 (dots)", "Difference"], ["t"])
     c = g.json("find_integrals.json", "find-integrals", example("brun.toml"))

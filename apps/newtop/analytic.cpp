@@ -215,11 +215,11 @@ int run(const AnalyticArgs& a) {
     }
     if (a.json) {
       j["field"] = field_json(sc.model);
-      std::cout << j.dump(2) << '\n';
+      print_json(std::cout, j);
     } else {
       std::cout << "newtop analytic " << sc.source << "\ncase      " << to_string(det.kind)
                 << "\n          " << det.reason << "\n";
-      if (j.contains("prym")) print_brun_prym(j["prym"]);
+      if (j.contains("prym")) print_brun_prym(without_negative_zeros(j["prym"]));
     }
     return kExitOk;
   }
@@ -244,9 +244,9 @@ int run(const AnalyticArgs& a) {
   }
   if (a.json) {
     j["field"] = field_json(sc.model);
-    std::cout << j.dump(2) << '\n';
+    print_json(std::cout, j);
   } else {
-    print_summary(sc, det, j, c, times.size());
+    print_summary(sc, det, without_negative_zeros(j), c, times.size());
   }
   return failed ? kExitIncomplete : kExitOk;
 }

@@ -37,6 +37,11 @@ void print_json(std::ostream& os, io::Json j) {
   os << j.dump(2) << '\n';
 }
 
+io::Json without_negative_zeros(io::Json j) {
+  clear_negative_zeros(j);
+  return j;
+}
+
 io::Json model_json(const Model& m) {
   io::Json j;
   const Body& b = m.body();

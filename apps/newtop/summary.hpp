@@ -44,6 +44,9 @@ void print_simulation_summary(std::ostream& os, const SimulationReport& r);
 /// the sign of a zero is never information in newtop's results).
 void print_json(std::ostream& os, io::Json j);
 
+/// j with every −0 replaced by 0 (for summaries that print parts of a JSON object).
+io::Json without_negative_zeros(io::Json j);
+
 /// Body (principal axes) and, for the quadratic field, g and lambda, as the program understood
 /// them.
 io::Json model_json(const Model& m);

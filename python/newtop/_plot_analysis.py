@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from . import _sphere, results
-from ._common import EPS, new_figure
+from ._common import EPS, new_figure, scenario_parameters
 from .results import Result, UnrecognisedResult
 
 QUADRATIC_NOTE = "V = M g r0·γ + ½ λ γ·Iγ (docs/model.md §3)"
@@ -193,8 +193,9 @@ def omega_scan_figure(res: Result):
     return fig
 
 
-def stability_map_figure(res: Result):
-    """The two-parameter diagram of ``stability --scan P1=..,P2=..``: the verdict at each point."""
+def stability_map_figure(res: Result, scenario=None):
+    """The two-parameter diagram of ``stability --scan P1=..,P2=..``: the verdict at each point;
+    with the scenario, the title gives the values of the parameters that are held fixed."""
     names = list(res.columns)
     x, y, verdict = res.columns[names[0]], res.columns[names[1]], res.columns["verdict"]
     xs, ys = np.unique(x), np.unique(y)
@@ -218,7 +219,9 @@ def stability_map_figure(res: Result):
               fontsize="small", loc="upper left")
     ax.set_xlabel(names[0])
     ax.set_ylabel(names[1])
-    ax.set_title(f"Stability of the spin about the radius vector over ({names[0]}, {names[1]})")
+    title = f"Stability of the spin about the radius vector over ({names[0]}, {names[1]})"
+    fixed = scenario_parameters(scenario, exclude=(names[0], names[1]))
+    ax.set_title(title + (f"\nfixed: {fixed}" if fixed else ""), fontsize="medium")
     return fig
 
 
@@ -239,6 +242,26 @@ def stability_figure(res: Result):
     return fig
 
 
+#: Largest turn |ω| Δt between two samples (rad) for which a line through the samples shows the
+#: motion: γ and the body axes move by at most |ω| Δt between them, and a chord of a circle of
+#: angle 0.2 rad departs from the arc by 1 − cos(0.1) = 0.5% of the radius.
+ANALYTIC_MAX_TURN = 0.2
+
+
+def analytic_sampling(samples):
+    """(dense, needed): whether the samples are close enough for lines (the body turns by at most
+    ANALYTIC_MAX_TURN between two of them), and the number of samples over the same span that
+    would be."""
+    t = np.array([x["t"] for x in samples], dtype=float)
+    w = max(float(np.linalg.norm(x["analytic"]["omega"])) for x in samples)
+    if len(t) < 2:
+        return False, 2
+    turn = float(np.max(np.diff(t))) * w
+    slack = 1 + 1e-9  # sample times written to 17 digits: their spacing is exact to round-off
+    needed = int(np.ceil((t[-1] - t[0]) * w / ANALYTIC_MAX_TURN / slack)) + 1
+    return turn <= ANALYTIC_MAX_TURN * slack, needed
+
+
 def analytic_figure(res: Result):
     """Closed-form solution against rkf78 at the samples (newtop analytic)."""
     d = res.data
@@ -247,17 +270,23 @@ def analytic_figure(res: Result):
         raise UnrecognisedResult(f"{res.path}: analytic result for case '{d['case']}' has no "
                                  "samples to draw (quadratures not implemented for this case)")
     t = np.array([x["t"] for x in s])
+    dense, needed = analytic_sampling(s)
     fig = new_figure(13, 4.5)
     for k, (key, names) in enumerate((("omega", "pqr"), ("gamma", ("γ1", "γ2", "γ3")))):
         ax = fig.add_subplot(1, 3, k + 1)
         a = np.array([x["analytic"][key] for x in s])
         n = np.array([x["numeric"][key] for x in s])
         for i, nm in enumerate(names):
-            ax.plot(t, a[:, i], label=f"{nm} closed form", linewidth=1.2)
+            if dense:
+                ax.plot(t, a[:, i], label=f"{nm} closed form", linewidth=1.2)
+            else:  # a line between samples a spin apart would draw a zig-zag that is not there
+                ax.plot(t, a[:, i], "o", markersize=3.5, label=f"{nm} closed form")
             ax.plot(t, n[:, i], "k.", markersize=3)
         ax.set_xlabel("t")
         ax.set_ylabel("ω" if key == "omega" else "γ")
-        ax.set_title(f"{'ω' if key == 'omega' else 'γ'}: closed form (lines), rkf78 (dots)")
+        how = "lines" if dense else "circles"
+        ax.set_title(f"{'ω' if key == 'omega' else 'γ'}: closed form ({how}), rkf78 (dots)",
+                     fontsize="medium")
         ax.legend(fontsize="x-small")
     ax = fig.add_subplot(1, 3, 3)
     err = [max(np.max(np.abs(np.subtract(x["analytic"][k], x["numeric"][k])))
@@ -266,7 +295,8 @@ def analytic_figure(res: Result):
     ax.set_xlabel("t")
     ax.set_ylabel("max |closed form − rkf78|")
     ax.set_title("Difference")
-    fig.suptitle(f"newtop analytic: case {d['case']}")
+    fig.suptitle(f"newtop analytic: case {d['case']}" + (
+        "" if dense else f" (samples too sparse for a curve: ask --samples {needed} or more)"))
     return fig
 
 

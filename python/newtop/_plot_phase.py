@@ -5,13 +5,31 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._common import new_figure
+from ._common import distinct_colours, new_figure, scenario_parameters
 from .results import SWEEP_QUANTITY_COLUMNS, TRAJECTORY_HEAD, Result, UnrecognisedResult
 
 #: The column a sweep map shows unless asked otherwise: the first of these that the file has.
 SWEEP_DEFAULT_QUANTITIES = ("megno", "lyapunov_max", "max_real_part", "linearly_stable",
                             "equilibria_count", "drift_energy")
 SECTION_SKIP = set(TRAJECTORY_HEAD) | {"orbit", "m1", "m2", "m3"}
+#: Axis labels of the section coordinates that cannot be misread (a bare `l` looks like `I` or 1).
+SECTION_LABELS = {"l": "ℓ = atan2(m1, m2), Andoyer angle (rad)", "L_over_G": "L/G = m3/|m|",
+                  "g": "g, Andoyer angle about m (rad)", "G": "G = |m|"}
+#: MEGNO maps: the colour scale is clipped to [0, MEGNO_CLIP] (⟨Y⟩ → 2 on regular orbits, grows
+#: like λ t/2 on chaotic ones: the structure is between 0 and a few units; larger values saturate).
+MEGNO_CLIP = (0.0, 8.0)
+#: The value of ⟨Y⟩ on regular (quasi-periodic) orbits, marked on MEGNO plots.
+MEGNO_REGULAR = 2.0
+
+
+def _axis_label(name):
+    if name in SECTION_LABELS:
+        return SECTION_LABELS[name]
+    if name.startswith("p_gamma"):
+        return f"p_γ{name[7:]} (momentum of γ{name[7:]})"
+    if name.startswith("gamma"):
+        return f"γ{name[5:]}"
+    return name
 
 
 def _section_points(res: Result, columns=None):
@@ -38,41 +56,72 @@ def _section_points(res: Result, columns=None):
     return np.array([x["orbit"] for x in cr]), get(names[0]), get(names[1]), names[0], names[1]
 
 
-def section_figure(res: Result, columns=None):
-    """A Poincaré section: one colour per orbit."""
+def section_levels(res: Result):
+    """"h = …, f = …" from the JSON's levels (seeded portraits), or "" where the result has none."""
+    lv = (res.data or {}).get("levels") if res.data else None
+    if not lv or lv.get("empty"):
+        return ""
+    return f"h = {lv['energy']:.6g}, f = {lv['area']:.6g}"
+
+
+def section_figure(res: Result, columns=None, scenario=None):
+    """A Poincaré section: one colour per orbit, all distinct; the title gives the surface, the
+    levels (h, f) and, with the scenario, the fixed parameters."""
     orbit, x, y, xn, yn = _section_points(res, columns)
-    fig = new_figure(6.5, 6)
+    fig = new_figure(7, 6.5)
     ax = fig.add_subplot()
     orbits = np.unique(orbit)
-    from matplotlib import colormaps
-
-    cmap = colormaps["tab20"]
-    for k, o in enumerate(orbits):
+    for colour, o in zip(distinct_colours(len(orbits)), orbits):
         sel = orbit == o
-        ax.scatter(x[sel], y[sel], s=2, color=cmap(k % 20), linewidths=0)
-    ax.set_xlabel(xn)
-    ax.set_ylabel(yn)
+        ax.scatter(x[sel], y[sel], s=2, color=colour, linewidths=0)
+    ax.set_xlabel(_axis_label(xn))
+    ax.set_ylabel(_axis_label(yn))
     surface = res.data.get("surface", "") if res.data else ""
-    ax.set_title(f"Poincaré section {surface}: {len(x)} crossings, {len(orbits)} orbits".replace(
-        "  ", " "))
+    lines = [f"Poincaré section {surface}: {len(x)} crossings, {len(orbits)} orbits".replace(
+        "  ", " ")]
+    levels = section_levels(res)
+    lines.append(levels or "levels h, f: not in this file (seeded runs write them to the JSON)")
+    params = scenario_parameters(scenario)
+    if params:
+        lines.append(params)
+    ax.set_title("\n".join(lines), fontsize="medium")
     return fig
 
 
 def chaos_history_figure(res: Result):
-    """Histories of the chaos indicators (newtop chaos --out), one panel each."""
+    """Histories of the chaos indicators (newtop chaos --out) against log t: the Lyapunov
+    spectrum (lambda1..lambda6, with --spectrum) and λ_max on one panel, MEGNO (the regular value 2
+    marked) and the FLI each on their own."""
     c = res.columns
-    names = [n for n in c if n != "t" and not isinstance(c[n], list)]
-    fig = new_figure(7, 2.2 * len(names) + 0.6)
-    axes = fig.subplots(len(names), 1, sharex=True, squeeze=False)[:, 0]
-    for ax, n in zip(axes, names):
-        ax.plot(c["t"], c[n], linewidth=1.0)
-        ax.set_ylabel(n)
-        if n.startswith("megno"):
-            ax.axhline(2.0, color="0.4", linestyle="--", linewidth=0.8, label="2 (quasi-periodic)")
+    t = np.asarray(c["t"], dtype=float)
+    keep = t > 0  # log t: the start (t0 = 0) has no place on the axis
+    spectrum = [n for n in c if n.startswith("lambda") and n[6:].isdigit()]
+    lyap = spectrum + [n for n in ("lyapunov_max",) if n in c]
+    others = [n for n in c if n != "t" and n not in lyap and not isinstance(c[n], list)]
+    panels = ([lyap] if lyap else []) + [[n] for n in others]
+    fig = new_figure(7.5, 2.6 * len(panels) + 0.6)
+    axes = fig.subplots(len(panels), 1, sharex=True, squeeze=False)[:, 0]
+    for ax, names in zip(axes, panels):
+        for k, n in enumerate(names):
+            style = ":" if n == "lyapunov_max" and spectrum else "-"
+            ax.plot(t[keep], np.asarray(c[n], dtype=float)[keep], style, linewidth=1.0,
+                    label=n, color="k" if style == ":" else f"C{k}")
+        ax.set_xscale("log")
+        if names is lyap:
+            ax.axhline(0.0, color="0.5", linewidth=0.6)
+            ax.set_ylabel("Lyapunov exponents" if spectrum else "lyapunov_max")
+            if len(names) > 1:
+                ax.legend(fontsize="x-small", ncol=4)
+        else:
+            ax.set_ylabel(names[0])
+        if names[0].startswith("megno"):
+            ax.axhline(MEGNO_REGULAR, color="0.4", linestyle="--", linewidth=0.8,
+                       label="2 (regular, quasi-periodic)")
             ax.legend(fontsize="x-small")
-        ax.grid(True, alpha=0.3)
-    axes[-1].set_xlabel("t")
-    axes[0].set_title("Chaos indicators against time")
+        ax.grid(True, which="both", alpha=0.3)
+    axes[-1].set_xlabel("t (log scale)")
+    axes[0].set_title("Chaos indicators against time" +
+                      (": the Lyapunov spectrum's history" if spectrum else ""))
     return fig
 
 
@@ -126,15 +175,28 @@ def sweep_figure(res: Result, quantity=None):
         ax.plot(x[~ok], np.zeros((~ok).sum()), "x", color="0.5", label="failed point")
         ax.set_xlabel(axes[0])
         ax.set_ylabel(quantity)
+        if quantity.startswith("megno"):
+            ax.axhline(MEGNO_REGULAR, color="#4dac26", linestyle="--", linewidth=1.0,
+                       label="2 (regular)")
+            ax.legend(fontsize="small")
     else:
         x, y = c[axes[0]], c[axes[1]]
         xs, ys = np.unique(x), np.unique(y)
         grid = np.full((len(ys), len(xs)), np.nan)
         grid[np.searchsorted(ys, y), np.searchsorted(xs, x)] = v
+        megno = quantity.startswith("megno")
+        clip = dict(vmin=MEGNO_CLIP[0], vmax=MEGNO_CLIP[1]) if megno else {}
         mesh = ax.pcolormesh(xs, ys, np.ma.masked_invalid(grid), shading="nearest",
-                             cmap="magma" if quantity.startswith("megno") else "viridis")
+                             cmap="magma" if megno else "viridis", **clip)
         ax.set_facecolor("0.75")  # failed points show the background
-        fig.colorbar(mesh, ax=ax, label=quantity)
+        if megno:
+            bar = fig.colorbar(mesh, ax=ax, extend="max",
+                               label=f"{quantity} (clipped to {MEGNO_CLIP[0]:g}–"
+                                     f"{MEGNO_CLIP[1]:g}; 2 = regular)")
+            bar.ax.axhline(MEGNO_REGULAR, color="#4dac26", linewidth=2.0)
+            bar.set_ticks(sorted(set([0.0, MEGNO_REGULAR, 4.0, 6.0, 8.0])))
+        else:
+            fig.colorbar(mesh, ax=ax, label=quantity)
         ax.set_xlabel(axes[0])
         ax.set_ylabel(axes[1])
     failed = int((~ok).sum())

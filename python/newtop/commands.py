@@ -109,12 +109,12 @@ chaos = _make("chaos", "Chaos indicators: lambda_max, spectrum, MEGNO and FLI (d
 section = _make("section", "Poincare section of the scenario's motion (docs/section.md); "
                 "'crossings' is a list of dicts.")
 analytic = _make("analytic", "Integrable case detected and its closed form against the numerics.")
-equilibria = _make("equilibria", "Every equilibrium at rest, its type and the count rule (spec 7).")
+equilibria = _make("equilibria", "Every equilibrium at rest, its type and the count rule (docs/model.md §7).")
 field = _make("field", "Exact and quadratic field of a mass model: V, dV/dgamma, moment, force.")
 find_integrals = _make("find-integrals", "Numerical search for polynomial first integrals.")
 integrals = _make("integrals", "First integrals at the initial state and which are conserved.")
 libration = _make("libration", "Planar pitch on an elliptic orbit: resonances, Floquet, section.")
-rotations = _make("rotations", "Families of permanent rotations (spec 6).")
+rotations = _make("rotations", "Families of permanent rotations (docs/model.md §8).")
 stability = _make("stability", "Linear and energy-Casimir stability; diagrams and scans.")
 sweep = _make("sweep", "Quantities over a grid of parameters (a sweep file, docs/sweep.md); "
               "'results' holds one array per column.")

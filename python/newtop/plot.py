@@ -4,6 +4,7 @@ Command line::
 
     python3 -m newtop.plot RESULT -o FIG.png|svg|pdf [--equilibria EQ.json]
                            [--panel all|drift|gamma|omega] [--quantity NAME]
+                           [--scenario SCENARIO.toml]
 
 RESULT is any CSV or JSON that ``newtop`` writes; its kind is recognised from its contents
 (``newtop.results``). A file that is not one gives one line on stderr and exit status 2.
@@ -164,8 +165,10 @@ def simulate_figure(sim: Result, equilibria=None, panel="all") -> Figure:
 
 # --- dispatch and command line -----------------------------------------------------------------
 
-def figure(res: Result, equilibria: Result | None = None, panel="all", quantity=None) -> Figure:
-    """The figure for any newtop result (the kind decides)."""
+def figure(res: Result, equilibria: Result | None = None, panel="all", quantity=None,
+           scenario=None) -> Figure:
+    """The figure for any newtop result (the kind decides). scenario: the scenario file the result
+    was computed from, whose fixed parameters the titles of sections and stability maps give."""
     from . import _plot_analysis as an
     from . import _plot_phase as ph
 
@@ -178,11 +181,11 @@ def figure(res: Result, equilibria: Result | None = None, panel="all", quantity=
         "rotations": lambda: an.rotations_figure(res),
         "omega_scan": lambda: an.omega_scan_figure(res),
         "stability": lambda: an.stability_figure(res),
-        "stability_map": lambda: an.stability_map_figure(res),
+        "stability_map": lambda: an.stability_map_figure(res, scenario),
         "analytic": lambda: an.analytic_figure(res),
         "find_integrals": lambda: an.find_integrals_figure(res),
         "field": lambda: an.field_figure(res),
-        "section": lambda: ph.section_figure(res),
+        "section": lambda: ph.section_figure(res, scenario=scenario),
         "sweep": lambda: ph.sweep_figure(res, quantity),
         "chaos_history": lambda: ph.chaos_history_figure(res),
         "chaos": lambda: ph.chaos_figure(res),
@@ -211,6 +214,8 @@ def main(argv=None) -> int:
                    help="for a trajectory: all panels (default) or one of them")
     p.add_argument("--quantity", help="for a sweep: the column to map (default: the first of "
                                       "megno, lyapunov_max, max_real_part, ...)")
+    p.add_argument("--scenario", help="the scenario file of a section or a stability map: its "
+                                      "fixed parameters go into the title")
     a = p.parse_args(argv)
     try:
         if os.path.splitext(a.output)[1].lower() not in FORMATS:
@@ -218,7 +223,10 @@ def main(argv=None) -> int:
                                      "or .pdf")
         res = results.load(a.result)
         eq = results.load(a.equilibria) if a.equilibria else None
-        fig = figure(res, eq, a.panel, a.quantity)
+        if a.scenario and not os.path.isfile(a.scenario):
+            raise UnrecognisedResult(f"--scenario {a.scenario}: expected a scenario file, found "
+                                     "no such file")
+        fig = figure(res, eq, a.panel, a.quantity, a.scenario)
         tmp = a.output + ".tmp" + os.path.splitext(a.output)[1]
         try:
             save(fig, tmp)

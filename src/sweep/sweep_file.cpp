@@ -8,6 +8,7 @@
 #include "../io/file_check.hpp"
 #include "../io/toml_parse.hpp"
 #include "../io/toml_reader.hpp"
+#include "newtop/core/grid.hpp"
 #include "newtop/io/suggest.hpp"
 #include "newtop/sweep/sweep.hpp"
 #include "sweep_points.hpp"
@@ -44,12 +45,13 @@ std::vector<double> axis_values(io::TableReader& r) {
   }
   std::vector<double> v(static_cast<std::size_t>(count));
   for (std::int64_t i = 0; i < count; ++i) {
-    // Computed from the index (never accumulated), the ends exact.
+    // Computed from the index (never accumulated), the ends exact; a linear axis gives the decimal
+    // points the user means where they are representable (0.9, not 0.8999999999999999).
     const double f = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
     v[static_cast<std::size_t>(i)] =
         i == count - 1   ? stop
         : scale == "log" ? std::exp(std::log(start) + f * (std::log(stop) - std::log(start)))
-                         : start + f * (stop - start);
+                         : grid_value(start, stop, count, i);
   }
   v.front() = start;
   return v;
