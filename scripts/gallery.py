@@ -154,7 +154,7 @@ def phase_figures(g: Gallery):
     c = g.run("chaos", example("section_chaotic.toml"), "--spectrum", "--t-end", "500", "--out",
               history)[0]
     g.add("chaos_spectrum.png", plot.figure(results.load(history)), [c],
-          ["the Lyapunov spectrum's history"], ["Lyapunov exponents", "megno", "t (log scale)"])
+          ["The Lyapunov spectrum's history", "MEGNO ⟨Y⟩ (mean)"], ["Lyapunov exponents", "megno", "t (log scale)"])
 
 
 def other_figures(g: Gallery):

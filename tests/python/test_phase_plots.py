@@ -125,6 +125,7 @@ def test_chaos_spectrum_history_on_one_log_scaled_panel(tmp_path):
         [x for x in labels if not x.startswith("_")]
     assert spectrum.get_xscale() == "log" and spectrum.get_ylabel() == "Lyapunov exponents"
     assert "spectrum" in spectrum.get_title()
+    assert all(ax.get_title() and ax.get_xlabel() == "t (log scale)" for ax in fig.axes)
     # the start t = 0 has no place on a log axis and is left out; every other row is drawn
     assert len(spectrum.get_lines()[0].get_xdata()) == len(t) - 1
     megno = next(ax for ax in fig.axes if ax.get_ylabel() == "megno")
