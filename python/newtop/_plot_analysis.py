@@ -242,6 +242,8 @@ def stability_figure(res: Result):
     return fig
 
 
+#: rkf78's samples drawn at most (every k-th beyond), so that its dots do not hide the curves.
+MAX_REFERENCE_DOTS = 100
 #: Largest turn |ω| Δt between two samples (rad) for which a line through the samples shows the
 #: motion: γ and the body axes move by at most |ω| Δt between them, and a chord of a circle of
 #: angle 0.2 rad departs from the arc by 1 − cos(0.1) = 0.5% of the radius.
@@ -271,6 +273,7 @@ def analytic_figure(res: Result):
                                  "samples to draw (quadratures not implemented for this case)")
     t = np.array([x["t"] for x in s])
     dense, needed = analytic_sampling(s)
+    dots = np.arange(0, len(t), max(1, -(-len(t) // MAX_REFERENCE_DOTS)))  # the curves stay visible
     fig = new_figure(13, 4.5)
     for k, (key, names) in enumerate((("omega", "pqr"), ("gamma", ("γ1", "γ2", "γ3")))):
         ax = fig.add_subplot(1, 3, k + 1)
@@ -281,7 +284,7 @@ def analytic_figure(res: Result):
                 ax.plot(t, a[:, i], label=f"{nm} closed form", linewidth=1.2)
             else:  # a line between samples a spin apart would draw a zig-zag that is not there
                 ax.plot(t, a[:, i], "o", markersize=3.5, label=f"{nm} closed form")
-            ax.plot(t, n[:, i], "k.", markersize=3)
+            ax.plot(t[dots], n[dots, i], "k.", markersize=3)
         ax.set_xlabel("t")
         ax.set_ylabel("ω" if key == "omega" else "γ")
         how = "lines" if dense else "circles"
