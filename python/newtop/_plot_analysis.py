@@ -274,9 +274,11 @@ def analytic_figure(res: Result):
     t = np.array([x["t"] for x in s])
     dense, needed = analytic_sampling(s)
     dots = np.arange(0, len(t), max(1, -(-len(t) // MAX_REFERENCE_DOTS)))  # the curves stay visible
-    fig = new_figure(13, 4.5)
+    euler = [e for e in d.get("euler_angles") or [] if e.get("theta") is not None]
+    rows = 2 if euler else 1
+    fig = new_figure(13, 4.5 * rows)
     for k, (key, names) in enumerate((("omega", "pqr"), ("gamma", ("γ1", "γ2", "γ3")))):
-        ax = fig.add_subplot(1, 3, k + 1)
+        ax = fig.add_subplot(rows, 3, k + 1)
         a = np.array([x["analytic"][key] for x in s])
         n = np.array([x["numeric"][key] for x in s])
         for i, nm in enumerate(names):
@@ -291,16 +293,46 @@ def analytic_figure(res: Result):
         ax.set_title(f"{'ω' if key == 'omega' else 'γ'}: closed form ({how}), rkf78 (dots)",
                      fontsize="medium")
         ax.legend(fontsize="x-small")
-    ax = fig.add_subplot(1, 3, 3)
+    ax = fig.add_subplot(rows, 3, 3)
     err = [max(np.max(np.abs(np.subtract(x["analytic"][k], x["numeric"][k])))
                for k in ("omega", "gamma")) for x in s]
     ax.semilogy(t, np.maximum(err, EPS / 2), "o-", markersize=3)
     ax.set_xlabel("t")
     ax.set_ylabel("max |closed form − rkf78|")
     ax.set_title("Difference")
+    if euler:
+        draw_euler_angles(fig, euler, "-" if dense else "o")
     fig.suptitle(f"newtop analytic: case {d['case']}" + (
         "" if dense else f" (samples too sparse for a curve: ask --samples {needed} or more)"))
     return fig
+
+
+def draw_euler_angles(fig, euler, style):
+    """The Lagrange top's Euler angles against t (nutation θ; precession φ and spin ψ, unwrapped)
+    and the trace of its symmetry axis on the unit sphere, from the JSON's "euler_angles"."""
+    t = np.array([e["t"] for e in euler], dtype=float)
+    theta, phi, psi = (np.array([e[k] for e in euler], dtype=float) for k in ("theta", "phi", "psi"))
+    kw = dict(markersize=3) if style == "o" else dict(linewidth=1.2)
+    ax = fig.add_subplot(2, 3, 4)
+    ax.plot(t, np.degrees(theta), style, color="C2", **kw)
+    ax.set_xlabel("t")
+    ax.set_ylabel("θ (deg)")
+    ax.set_title("Nutation θ (cos θ = γ3)", fontsize="medium")
+    ax = fig.add_subplot(2, 3, 5)
+    ax.plot(t, np.unwrap(phi), style, label="precession φ", **kw)
+    ax.plot(t, np.unwrap(psi), style, label="spin ψ", **kw)
+    ax.set_xlabel("t")
+    ax.set_ylabel("angle (rad, unwrapped)")
+    ax.set_title("Precession φ and spin ψ (Euler 3-1-3)", fontsize="medium")
+    ax.legend(fontsize="x-small")
+    ax = fig.add_subplot(2, 3, 6, projection="3d")
+    axis = np.array([e["axis"] for e in euler], dtype=float)
+    _sphere.draw_sphere(ax)
+    ax.plot(axis[:, 0], axis[:, 1], axis[:, 2], style, color="#b2182b", **kw)
+    ax.set_xlabel("x (node at t = 0)")
+    ax.set_ylabel("y")
+    ax.set_zlabel("z (fixed direction e)")
+    ax.set_title("Trace of the symmetry axis e3", fontsize="medium")
 
 
 def find_integrals_figure(res: Result):
