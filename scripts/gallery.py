@@ -154,13 +154,14 @@ def phase_figures(g: Gallery):
     c = g.run("chaos", example("section_chaotic.toml"), "--spectrum", "--t-end", "500", "--out",
               history)[0]
     g.add("chaos_spectrum.png", plot.figure(results.load(history)), [c],
-          ["the Lyapunov spectrum's history"], ["Lyapunov exponents", "megno", "t (log scale)"])
+          ["The Lyapunov spectrum's history", "MEGNO ⟨Y⟩ (mean)"], ["Lyapunov exponents", "megno", "t (log scale)"])
 
 
 def other_figures(g: Gallery):
     c = g.json("analytic.json", "analytic", example("analytic_lagrange.toml"), "--samples", "400")
     g.add("analytic_lagrange.png", plot.figure(results.load(g.file("analytic.json"))), [c],
-          ["closed form (lines), rkf78 (dots)", "Difference"], ["t"])
+          ["closed form (lines), rkf78 (dots)", "Difference", "Nutation θ (cos θ = γ3)",
+           "Trace of the symmetry axis e3"], ["t", "θ (deg)"])
     c = g.json("find_integrals.json", "find-integrals", example("brun.toml"))
     g.add("find_integrals_brun.png", plot.figure(results.load(g.file("find_integrals.json"))),
           [c], ["Integral search, degree 2"], ["index of singular value"])

@@ -18,6 +18,7 @@
 
 #include "analytic_brun.hpp"
 #include "command.hpp"
+#include "newtop/analysis/lagrange_attitude.hpp"
 #include "newtop/integrate/run.hpp"
 #include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
@@ -116,9 +117,21 @@ void add_case_details(io::Json& j, const AnalyticSolution& sol, const std::vecto
     const LagrangeQuartic& q = l->quartic;
     j["E"] = q.E, j["a"] = q.a, j["a1"] = q.a1, j["b"] = q.b, j["c"] = q.c, j["r"] = q.r;
     j["quartic_roots"] = l->real_roots;
-    io::Json g = io::Json::array();
-    for (double t : times) g.push_back({{"t", t}, {"gamma3", lagrange_gamma3(*l, t)[0]}});
+    io::Json g = io::Json::array(), euler = io::Json::array();
+    for (double t : times) {
+      g.push_back({{"t", t}, {"gamma3", lagrange_gamma3(*l, t)[0]}});
+      // (φ, θ, ψ) and the symmetry axis e3 in the fixed frame N (z along e): R e3 = q e3.
+      const Vec3 angles = lagrange_euler_angles(*l, t);
+      const Vec3 axis = from_euler_313(angles) * Vec3::UnitZ();
+      const bool finite = angles.allFinite() && axis.allFinite();  // γ3 = ±1: φ, ψ undefined
+      euler.push_back({{"t", t},
+                       {"phi", finite ? io::Json(angles[0]) : io::Json(nullptr)},
+                       {"theta", finite ? io::Json(angles[1]) : io::Json(nullptr)},
+                       {"psi", finite ? io::Json(angles[2]) : io::Json(nullptr)},
+                       {"axis", finite ? io::to_json(axis) : io::Json(nullptr)}});
+    }
     j["gamma3"] = g;
+    j["euler_angles"] = euler;
   } else if (const auto* b = std::get_if<BrunCase>(&sol)) {
     add_brun_details(j, *b, times);
   }

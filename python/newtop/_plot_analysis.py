@@ -242,6 +242,8 @@ def stability_figure(res: Result):
     return fig
 
 
+#: rkf78's samples drawn at most (every k-th beyond), so that its dots do not hide the curves.
+MAX_REFERENCE_DOTS = 100
 #: Largest turn |ω| Δt between two samples (rad) for which a line through the samples shows the
 #: motion: γ and the body axes move by at most |ω| Δt between them, and a chord of a circle of
 #: angle 0.2 rad departs from the arc by 1 − cos(0.1) = 0.5% of the radius.
@@ -271,9 +273,12 @@ def analytic_figure(res: Result):
                                  "samples to draw (quadratures not implemented for this case)")
     t = np.array([x["t"] for x in s])
     dense, needed = analytic_sampling(s)
-    fig = new_figure(13, 4.5)
+    dots = np.arange(0, len(t), max(1, -(-len(t) // MAX_REFERENCE_DOTS)))  # the curves stay visible
+    euler = [e for e in d.get("euler_angles") or [] if e.get("theta") is not None]
+    rows = 2 if euler else 1
+    fig = new_figure(13, 4.5 * rows)
     for k, (key, names) in enumerate((("omega", "pqr"), ("gamma", ("γ1", "γ2", "γ3")))):
-        ax = fig.add_subplot(1, 3, k + 1)
+        ax = fig.add_subplot(rows, 3, k + 1)
         a = np.array([x["analytic"][key] for x in s])
         n = np.array([x["numeric"][key] for x in s])
         for i, nm in enumerate(names):
@@ -281,23 +286,53 @@ def analytic_figure(res: Result):
                 ax.plot(t, a[:, i], label=f"{nm} closed form", linewidth=1.2)
             else:  # a line between samples a spin apart would draw a zig-zag that is not there
                 ax.plot(t, a[:, i], "o", markersize=3.5, label=f"{nm} closed form")
-            ax.plot(t, n[:, i], "k.", markersize=3)
+            ax.plot(t[dots], n[dots, i], "k.", markersize=3)
         ax.set_xlabel("t")
         ax.set_ylabel("ω" if key == "omega" else "γ")
         how = "lines" if dense else "circles"
         ax.set_title(f"{'ω' if key == 'omega' else 'γ'}: closed form ({how}), rkf78 (dots)",
                      fontsize="medium")
         ax.legend(fontsize="x-small")
-    ax = fig.add_subplot(1, 3, 3)
+    ax = fig.add_subplot(rows, 3, 3)
     err = [max(np.max(np.abs(np.subtract(x["analytic"][k], x["numeric"][k])))
                for k in ("omega", "gamma")) for x in s]
     ax.semilogy(t, np.maximum(err, EPS / 2), "o-", markersize=3)
     ax.set_xlabel("t")
     ax.set_ylabel("max |closed form − rkf78|")
     ax.set_title("Difference")
+    if euler:
+        draw_euler_angles(fig, euler, "-" if dense else "o")
     fig.suptitle(f"newtop analytic: case {d['case']}" + (
         "" if dense else f" (samples too sparse for a curve: ask --samples {needed} or more)"))
     return fig
+
+
+def draw_euler_angles(fig, euler, style):
+    """The Lagrange top's Euler angles against t (nutation θ; precession φ and spin ψ, unwrapped)
+    and the trace of its symmetry axis on the unit sphere, from the JSON's "euler_angles"."""
+    t = np.array([e["t"] for e in euler], dtype=float)
+    theta, phi, psi = (np.array([e[k] for e in euler], dtype=float) for k in ("theta", "phi", "psi"))
+    kw = dict(markersize=3) if style == "o" else dict(linewidth=1.2)
+    ax = fig.add_subplot(2, 3, 4)
+    ax.plot(t, np.degrees(theta), style, color="C2", **kw)
+    ax.set_xlabel("t")
+    ax.set_ylabel("θ (deg)")
+    ax.set_title("Nutation θ (cos θ = γ3)", fontsize="medium")
+    ax = fig.add_subplot(2, 3, 5)
+    ax.plot(t, np.unwrap(phi), style, label="precession φ", **kw)
+    ax.plot(t, np.unwrap(psi), style, label="spin ψ", **kw)
+    ax.set_xlabel("t")
+    ax.set_ylabel("angle (rad, unwrapped)")
+    ax.set_title("Precession φ and spin ψ (Euler 3-1-3)", fontsize="medium")
+    ax.legend(fontsize="x-small")
+    ax = fig.add_subplot(2, 3, 6, projection="3d")
+    axis = np.array([e["axis"] for e in euler], dtype=float)
+    _sphere.draw_sphere(ax)
+    ax.plot(axis[:, 0], axis[:, 1], axis[:, 2], style, color="#b2182b", **kw)
+    ax.set_xlabel("x (node at t = 0)")
+    ax.set_ylabel("y")
+    ax.set_zlabel("z (fixed direction e)")
+    ax.set_title("Trace of the symmetry axis e3", fontsize="medium")
 
 
 def find_integrals_figure(res: Result):

@@ -88,6 +88,11 @@ def section_figure(res: Result, columns=None, scenario=None):
     return fig
 
 
+#: Titles of the panels of a chaos history.
+PANEL_TITLES = {"lyapunov_max": "Largest Lyapunov exponent", "megno_y": "MEGNO Y(t) (instantaneous)",
+                "megno": "MEGNO ⟨Y⟩ (mean)", "fli": "Fast Lyapunov indicator"}
+
+
 def chaos_history_figure(res: Result):
     """Histories of the chaos indicators (newtop chaos --out) against log t: the Lyapunov
     spectrum (lambda1..lambda6, with --spectrum) and λ_max on one panel, MEGNO (the regular value 2
@@ -119,9 +124,11 @@ def chaos_history_figure(res: Result):
                        label="2 (regular, quasi-periodic)")
             ax.legend(fontsize="x-small")
         ax.grid(True, which="both", alpha=0.3)
-    axes[-1].set_xlabel("t (log scale)")
-    axes[0].set_title("Chaos indicators against time" +
-                      (": the Lyapunov spectrum's history" if spectrum else ""))
+        ax.set_xlabel("t (log scale)")
+        ax.set_title(PANEL_TITLES.get(names[0], names[0]), fontsize="medium")
+    if spectrum:
+        axes[0].set_title("The Lyapunov spectrum's history (λ_max dotted)", fontsize="medium")
+    fig.suptitle("Chaos indicators against time")
     return fig
 
 

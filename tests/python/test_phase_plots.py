@@ -125,6 +125,7 @@ def test_chaos_spectrum_history_on_one_log_scaled_panel(tmp_path):
         [x for x in labels if not x.startswith("_")]
     assert spectrum.get_xscale() == "log" and spectrum.get_ylabel() == "Lyapunov exponents"
     assert "spectrum" in spectrum.get_title()
+    assert all(ax.get_title() and ax.get_xlabel() == "t (log scale)" for ax in fig.axes)
     # the start t = 0 has no place on a log axis and is left out; every other row is drawn
     assert len(spectrum.get_lines()[0].get_xdata()) == len(t) - 1
     megno = next(ax for ax in fig.axes if ax.get_ylabel() == "megno")
@@ -220,3 +221,23 @@ def test_analytic_closed_form_is_a_curve_only_where_the_samples_resolve_it(tmp_p
     closed = [ln for ln in ax.get_lines() if ln.get_label().endswith("closed form")]
     assert closed and all(ln.get_linestyle() == "-" for ln in closed)
     assert "(lines)" in ax.get_title() and "too sparse" not in dense._suptitle.get_text()
+
+
+def test_lagrange_figure_draws_the_euler_angles_and_the_axis_trace(tmp_path):
+    p = analytic_json(tmp_path, 201)
+    d = json.loads(p.read_text())
+    t = np.array([x["t"] for x in d["samples"]])
+    theta, phi, psi = 0.5 + 0.1 * np.sin(3 * t), 0.7 * t, 20 * t
+    d["euler_angles"] = [{"t": x, "phi": f, "theta": th, "psi": s,
+                          "axis": [np.sin(th) * np.sin(f), -np.sin(th) * np.cos(f), np.cos(th)]}
+                         for x, th, f, s in zip(t, theta, phi, psi)]
+    p.write_text(json.dumps(d))
+    fig = plot.figure(results.load(p))
+    titles = [ax.get_title() for ax in fig.axes]
+    assert "Nutation θ (cos θ = γ3)" in titles
+    assert "Precession φ and spin ψ (Euler 3-1-3)" in titles
+    assert "Trace of the symmetry axis e3" in titles
+    nutation = fig.axes[titles.index("Nutation θ (cos θ = γ3)")]
+    assert np.allclose(nutation.get_lines()[0].get_ydata(), np.degrees(theta))
+    # without the key (other cases) the figure keeps its one row
+    assert len(plot.figure(results.load(analytic_json(tmp_path, 50))).axes) == 3

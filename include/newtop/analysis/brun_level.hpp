@@ -8,7 +8,7 @@
 /// Working frame and notation of brun_curve.hpp and brun_separation.hpp. On every level,
 /// m = γ × y + f γ with y = m × γ tangent to the Poisson sphere, so (u_s, w_s) of brun_point and
 /// the signs S_i of γ_i are coordinates of the level; p_s = w_s/(2P(u_s)). With the bracket of
-/// docs/model.md §4 ({m_i, m_j} = ε_ijk m_k), {u_s, u_t} = 0, {u_s, p_t} = −δ_st and
+/// docs/model.md §4 ({m_i, m_j} = −ε_ijk m_k), {u_s, u_t} = 0, {u_s, p_t} = −δ_st and
 ///   {p1, p2} = f (u2 − u1) / (4 V γ1 γ2 γ3),  V = (e2 − e1)(e3 − e2)(e3 − e1):
 /// f times the area form of the sphere in (u1, u2) — a magnetic monopole of charge f.
 
