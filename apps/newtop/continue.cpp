@@ -1,0 +1,265 @@
+// newtop continue SCENARIO --family KIND --parameter KEY --range A:B: a family of periodic
+// solutions, relative equilibria or permanent rotations continued by pseudo-arclength in one
+// scenario key, with its folds, flips, branch points and Krein collisions located
+// (docs/continuation.md).
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <sstream>
+
+#include "command.hpp"
+#include "newtop/analysis/rotation_family.hpp"
+#include "newtop/io/json.hpp"
+#include "newtop/io/orbit_scenario.hpp"
+#include "newtop/io/output.hpp"
+#include "newtop/io/scenario.hpp"
+#include "newtop/orbit/orbit_families.hpp"
+#include "newtop/orbit/orbit_stability.hpp"
+
+namespace newtop::app {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct ContinueArgs {
+  std::string scenario, family, parameter, range;
+  std::optional<std::string> resonance, line, second, second_range, out;
+  bool json = false;
+};
+
+std::pair<double, double> parse_range(const std::string& text) {
+  std::istringstream is(text);
+  double a = 0, b = 0;
+  char colon = 0;
+  std::string rest;
+  if (!(is >> a >> colon >> b) || colon != ':' || (is >> rest) || !std::isfinite(a) ||
+      !std::isfinite(b) || a == b) {
+    throw InputError("--range: expected A:B, two different finite numbers, found '" + text + "'");
+  }
+  return {a, b};
+}
+
+SpinOrbitResonance parse_resonance(const std::string& text) {
+  std::istringstream is(text);
+  int p = 0, q = 0;
+  char colon = 0;
+  std::string rest;
+  if (!(is >> p >> colon >> q) || colon != ':' || (is >> rest)) {
+    throw InputError("--resonance: expected P:Q (integers), found '" + text + "'");
+  }
+  try {
+    return resonance(p, q);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--resonance: ") + e.what());
+  }
+}
+
+double parse_line(const std::string& text) {
+  if (text == "pi/2") return kPi / 2;
+  std::istringstream is(text);
+  double v = 1.0;
+  std::string rest;
+  if ((is >> v) && !(is >> rest)) {
+    if (v == 0.0) return 0.0;
+    if (std::abs(v - kPi / 2) < 1e-12) return kPi / 2;
+  }
+  throw InputError(
+      "--line: expected the reversibility line theta(0) = 0 or pi/2 (1.5707963267948966), found '" +
+      text + "'");
+}
+
+/// `body.inertia[i]` → i; nullopt for another key.
+std::optional<int> inertia_index(const std::string& key) {
+  for (int i = 0; i < 3; ++i)
+    if (key == "body.inertia[" + std::to_string(i) + "]") return i;
+  return std::nullopt;
+}
+
+[[noreturn]] void refuse_key(const ContinueArgs& a, const std::string& allowed) {
+  throw InputError("--parameter: expected " + allowed + " for --family " + a.family + ", found '" +
+                   a.parameter + "'");
+}
+
+EllipticOrbit pitch_orbit(const io::OrbitScenario& sc) {
+  if (const auto* e = std::get_if<EllipticOrbit>(&sc.orbit)) return *e;
+  const auto& c = std::get<CircularOrbit>(sc.orbit);
+  if (!(c.rate > 0) || c.lambda_ != 3.0 * c.rate * c.rate) {
+    throw InputError(sc.source +
+                     ": [orbit]: expected a Kepler orbit (lambda = 3 rate^2), found "
+                     "rate " +
+                     format_number(c.rate) + " and lambda " + format_number(c.lambda_));
+  }
+  return EllipticOrbit::from_mean_motion(c.rate, 0.0, 0.0);
+}
+
+struct Run {
+  Family family;
+  std::vector<std::string> names;  // of FamilyPoint::values
+};
+
+Run run_resonance(const ContinueArgs& a, double p0, double p1) {
+  const io::OrbitScenario sc = io::load_orbit_scenario(a.scenario);
+  const EllipticOrbit orbit = pitch_orbit(sc);
+  const PitchProblem base = pitch_problem(sc.body, orbit);  // no gyrostat, r0 = 0
+  const SpinOrbitResonance r = parse_resonance(a.resonance.value_or("1:1"));
+  const double line = a.line ? parse_line(*a.line) : 0.0;
+  PitchPath path;
+  if (a.parameter == "orbit.eccentricity") {
+    path = eccentricity_path(base.k);
+  } else if (const auto i = inertia_index(a.parameter)) {
+    path = inertia_path(sc.body.inertia(), *i, base.eccentricity);
+  } else {
+    refuse_key(a, "orbit.eccentricity or body.inertia[0..2]");
+  }
+  const double centre = r.half_turns / (2.0 * r.periods);
+  return {resonance_family(path, p0, p1, r, line, centre), {"theta0", "dtheta0"}};
+}
+
+Run run_rotation(const ContinueArgs& a, double p0, double p1) {
+  if (a.parameter != "stability.omega") refuse_key(a, "stability.omega");
+  const io::Scenario sc = io::load_scenario(a.scenario);
+  if (sc.model.kind() != FieldKind::quadratic) {
+    throw InputError(sc.source + ": [field]: expected the quadratic field for --family rotation");
+  }
+  const QuadraticModel& m = sc.model.quadratic();
+  return {rotation_family(m, largest_axis(m.body), p0, p1), {"omega"}};
+}
+
+Run run_equilibrium(const ContinueArgs& a, double p0, double p1) {
+  const auto i = inertia_index(a.parameter);
+  if (!i) refuse_key(a, "body.inertia[0..2]");
+  const io::OrbitScenario sc = io::load_orbit_scenario(a.scenario);
+  if (!sc.circular() || sc.body.gyrostat() != Vec3::Zero()) {
+    throw InputError(sc.source +
+                     ": expected a circular orbit and no gyrostat for --family "
+                     "equilibrium");
+  }
+  const CircularOrbitModel model(sc.body, std::get<CircularOrbit>(sc.orbit));
+  int radial = 0, normal = 0;
+  sc.initial.gamma.cwiseAbs().maxCoeff(&radial);
+  sc.initial.normal.cwiseAbs().maxCoeff(&normal);
+  if (std::abs(sc.initial.gamma[radial]) < 1 - 1e-9 ||
+      std::abs(sc.initial.normal[normal]) < 1 - 1e-9 ||
+      !(fixed_point_residual(model, sc.initial) <= kRelativeEquilibriumTolerance)) {
+    throw InputError(sc.source +
+                     ": [initial]: expected a relative equilibrium with the radius and "
+                     "the orbit normal along principal axes (at rest in the orbital frame)");
+  }
+  return {equilibrium_family(sc.body.inertia(), radial, normal, *i, p0, p1), {"A", "B", "C"}};
+}
+
+io::Json point_json(const FamilyPoint& p, const std::vector<std::string>& names) {
+  io::Json values = io::Json::object(), mult = io::Json::array();
+  for (std::size_t k = 0; k < names.size(); ++k) values[names[k]] = p.values[k];
+  for (const auto& z : p.multipliers) mult.push_back({z.real(), z.imag()});
+  return {{"parameter", p.parameter},
+          {"values", values},
+          {"period", p.period},
+          {"multipliers", mult},
+          {"stability", p.stability}};
+}
+
+void write_csv(std::ostream& o, const Run& r) {
+  o << "parameter";
+  for (const auto& n : r.names) o << ',' << n;
+  o << ",period";
+  const std::size_t m = r.family.points.empty() ? 0 : r.family.points[0].multipliers.size();
+  for (std::size_t k = 1; k <= m; ++k) o << ",multiplier" << k << "_re,multiplier" << k << "_im";
+  o << ",stability\n";
+  for (const FamilyPoint& p : r.family.points) {
+    o << format_number(p.parameter);
+    for (Eigen::Index k = 0; k < p.values.size(); ++k) o << ',' << format_number(p.values[k]);
+    o << ',' << format_number(p.period);
+    for (const auto& z : p.multipliers)
+      o << ',' << format_number(z.real()) << ',' << format_number(z.imag());
+    o << ',' << p.stability << '\n';
+  }
+}
+
+int run(const ContinueArgs& a) {
+  if (a.second || a.second_range) {
+    throw InputError(
+        "--second: two-parameter continuation of a bifurcation's locus is not "
+        "available yet");
+  }
+  if (a.family != "resonance" && (a.resonance || a.line)) {
+    throw InputError(std::string(a.resonance ? "--resonance" : "--line") +
+                     ": applies only to --family resonance, found --family " + a.family);
+  }
+  const auto [p0, p1] = parse_range(a.range);
+  Run r;
+  if (a.family == "resonance") {
+    r = run_resonance(a, p0, p1);
+  } else if (a.family == "rotation") {
+    r = run_rotation(a, p0, p1);
+  } else if (a.family == "equilibrium") {
+    r = run_equilibrium(a, p0, p1);
+  } else if (a.family == "periodic") {
+    throw InputError(
+        "--family periodic: the Lyapunov families of the Euler-Poisson equations are "
+        "not available yet (resonance, equilibrium, rotation are)");
+  } else {
+    throw InputError("--family: expected resonance, periodic, equilibrium or rotation, found '" +
+                     a.family + "'");
+  }
+  if (a.out) {
+    const std::string inputs[] = {a.scenario};
+    io::AtomicFile file(*a.out, inputs);
+    write_csv(file.stream(), r);
+    file.commit();
+  }
+  io::Json points = io::Json::array(), events = io::Json::array();
+  for (const FamilyPoint& p : r.family.points) points.push_back(point_json(p, r.names));
+  for (const BifurcationEvent& e : r.family.events) {
+    const io::Json pj = point_json(e.point, r.names);
+    events.push_back({{"type", to_string(e.type)},
+                      {"value", e.value},
+                      {"solution", pj["values"]},
+                      {"multipliers", pj["multipliers"]}});
+  }
+  io::Json j{{"scenario", a.scenario}, {"family", a.family},  {"parameter", a.parameter},
+             {"range", {p0, p1}},      {"end", r.family.end}, {"points", points},
+             {"events", events}};
+  if (a.out) j["csv"] = *a.out;
+  if (a.json) {
+    std::cout << j.dump(2) << '\n';
+    return kExitOk;
+  }
+  std::cout << "newtop continue " << a.scenario << ": family " << a.family << " in " << a.parameter
+            << " from " << format_number(p0) << " to " << format_number(p1) << "\n  "
+            << r.family.points.size() << " points, ended: " << r.family.end << "\n";
+  for (const BifurcationEvent& e : r.family.events) {
+    std::cout << "  " << to_string(e.type) << " at " << a.parameter << " = "
+              << format_number(e.value) << "\n";
+  }
+  if (a.out) std::cout << "family written to " << *a.out << "\n";
+  return kExitOk;
+}
+
+const RegisterCommand reg{Command{
+    "continue",
+    "Continue a family (spin-orbit resonance, relative equilibrium, rotation) in one parameter "
+    "and locate its bifurcations",
+    [](CLI::App& sub) -> std::function<int()> {
+      auto a = std::make_shared<ContinueArgs>();
+      sub.add_option("scenario", a->scenario, "scenario file (TOML)")->required();
+      sub.add_option("--family", a->family, "resonance, periodic, equilibrium or rotation")
+          ->required();
+      sub.add_option("--parameter", a->parameter,
+                     "scenario key: orbit.eccentricity, body.inertia[i], stability.omega")
+          ->required();
+      sub.add_option("--range", a->range, "A:B, the parameter's first and last value")->required();
+      sub.add_option("--resonance", a->resonance, "P:Q spin:orbit (resonance; default 1:1)");
+      sub.add_option("--line", a->line, "theta(0) of the start: 0 or pi/2 (resonance; default 0)");
+      sub.add_option("--second", a->second, "second parameter (not available yet)");
+      sub.add_option("--second-range", a->second_range, "C:D (not available yet)");
+      sub.add_option("--out", a->out, "the family as CSV");
+      sub.add_flag("--json", a->json, "print one JSON object");
+      return [a] { return run(*a); };
+    }}};
+
+}  // namespace
+}  // namespace newtop::app
