@@ -114,6 +114,13 @@ Run run_resonance(const ContinueArgs& a, double p0, double p1) {
   } else {
     refuse_key(a, "orbit.eccentricity or body.inertia[0..2]");
   }
+  for (const double p : {p0, p1}) {
+    try {
+      path(p);
+    } catch (const InputError& e) {
+      throw InputError("--range: " + a.parameter + " = " + format_number(p) + ": " + e.what());
+    }
+  }
   const double centre = r.half_turns / (2.0 * r.periods);
   return {resonance_family(path, p0, p1, r, line, centre), {"theta0", "dtheta0"}};
 }

@@ -127,6 +127,38 @@ TEST(ContinuationResonance, OddFamilyFoldsAgreeWithNewtonOnTheFoldSystem) {
   EXPECT_EQ(folds, 2);
 }
 
+TEST(ContinuationResonance, AsymmetricPitchforkOfTheHalfSynchronousResonance) {
+  // e = 0.1, 1:2 (N = 1, M = −1), the symmetric solution on θ(0) = π/2 (docs/orbit.md §9):
+  // continued in k, its branch point (c = Φ₁₀(π, 0) = 0, where T = 2 without a fold) against
+  // bisection on T − 2 along the 1-D shooting solutions θ(π) = π/2 − π/2 = 0.
+  const double e = 0.1;
+  const Family f = resonance_family([e](double k) { return pitch_problem(e, k); }, 0.86, 0.89,
+                                    resonance(1, 2), kPi / 2, -0.5);
+  const auto bp = of_type(f, BifurcationType::branch_point);
+  ASSERT_EQ(bp.size(), 1u);
+  EXPECT_TRUE(of_type(f, BifurcationType::fold).empty());
+  double s = bp[0].point.values[1];
+  auto g = [&](double k) {
+    const PitchProblem p = pitch_problem(e, k);
+    for (int i = 0; i < 30; ++i) {
+      const PitchFlow fl = pitch_flow(p, Vec2(kPi / 2, s), 0.0, kPi);
+      const double step = fl.x[0] / fl.phi(0, 1);
+      s -= step;
+      if (std::abs(step) < 1e-14) break;
+    }
+    return pitch_flow(p, Vec2(kPi / 2, s), 0.0, 2 * kPi).phi.trace() - 2;
+  };
+  double lo = bp[0].value - 1e-3, hi = bp[0].value + 1e-3;
+  const bool lo_sign = g(lo) < 0;
+  ASSERT_NE(lo_sign, g(hi) < 0);
+  while (hi - lo > 1e-14) {
+    const double mid = 0.5 * (lo + hi);
+    ((g(mid) < 0) == lo_sign ? lo : hi) = mid;
+  }
+  EXPECT_NEAR(bp[0].value, 0.5 * (lo + hi), kLocated);
+  EXPECT_NEAR(bp[0].value, 0.8803, 1e-4);  // docs/orbit.md §9: k ≈ 0.8803
+}
+
 // --- rotations: Beletsky's threshold as a Krein collision ------------------------------------
 
 TEST(ContinuationRotation, KreinCollisionIsBeletskysThreshold) {
