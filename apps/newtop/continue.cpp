@@ -95,10 +95,79 @@ EllipticOrbit pitch_orbit(const io::OrbitScenario& sc) {
   return EllipticOrbit::from_mean_motion(c.rate, 0.0, 0.0);
 }
 
+struct Boundary {
+  BifurcationType type;
+  std::vector<FamilyPoint> points;  // in the order of the second parameter's range
+  std::string end;
+};
+
 struct Run {
   Family family;
   std::vector<std::string> names;  // of FamilyPoint::values
+  std::vector<Boundary> boundaries;
 };
+
+/// kEccentricityKey for orbit.eccentricity, i for body.inertia[i], nullopt otherwise.
+std::optional<int> pitch_key(const std::string& key) {
+  if (key == "orbit.eccentricity") return kEccentricityKey;
+  return inertia_index(key);
+}
+
+/// The second key, its range about the scenario's value q0 and the plane of (e, k) they span,
+/// checked before any work.
+struct SecondAxis {
+  PitchPlanePath path;
+  double c, d, q0;
+};
+
+SecondAxis check_second(const ContinueArgs& a, const Vec3& inertia, double e, double p0) {
+  const auto q_key = pitch_key(*a.second);
+  if (!q_key || *q_key == *pitch_key(a.parameter)) {
+    throw InputError(
+        "--second: expected orbit.eccentricity or body.inertia[0..2] other than "
+        "--parameter, found '" +
+        *a.second + "'");
+  }
+  const auto [c, d] = parse_range(*a.second_range);
+  const double q0 = *q_key == kEccentricityKey ? e : inertia[*q_key];
+  if (q0 < std::min(c, d) || q0 > std::max(c, d)) {
+    throw InputError("--second-range: expected a range about the scenario's " + *a.second + " = " +
+                     format_number(q0) + ", found " + *a.second_range);
+  }
+  SecondAxis s{pitch_plane_path(inertia, e, *pitch_key(a.parameter), *q_key), c, d, q0};
+  for (const double q : {c, d}) {
+    try {
+      s.path(p0, q);
+    } catch (const InputError& err) {
+      throw InputError("--second-range: " + *a.second + " = " + format_number(q) + ": " +
+                       err.what());
+    }
+  }
+  return s;
+}
+
+/// Each event's locus continued in the second key from q0 to both ends of its range
+/// (docs/continuation.md §2).
+std::vector<Boundary> boundaries(const SecondAxis& s, const Family& f, const SpinOrbitResonance& r,
+                                 double line) {
+  std::vector<Boundary> out;
+  for (const BifurcationEvent& ev : f.events) {
+    Boundary b{ev.type, {}, ""};
+    for (const double end : {s.c, s.d}) {
+      if (end == s.q0) continue;
+      const Family curve = resonance_boundary(s.path, ev, s.q0, end, r, line);
+      if (end == s.c) {
+        b.points.assign(curve.points.rbegin(), curve.points.rend());
+      } else {
+        b.points.insert(b.points.end(), curve.points.begin() + (s.q0 == s.c ? 0 : 1),
+                        curve.points.end());
+      }
+      b.end += (b.end.empty() ? "" : ",") + curve.end;
+    }
+    out.push_back(std::move(b));
+  }
+  return out;
+}
 
 Run run_resonance(const ContinueArgs& a, double p0, double p1) {
   const io::OrbitScenario sc = io::load_orbit_scenario(a.scenario);
@@ -121,8 +190,12 @@ Run run_resonance(const ContinueArgs& a, double p0, double p1) {
       throw InputError("--range: " + a.parameter + " = " + format_number(p) + ": " + e.what());
     }
   }
+  std::optional<SecondAxis> second;
+  if (a.second) second = check_second(a, sc.body.inertia(), base.eccentricity, p0);
   const double centre = r.half_turns / (2.0 * r.periods);
-  return {resonance_family(path, p0, p1, r, line, centre), {"theta0", "dtheta0"}};
+  Run run{resonance_family(path, p0, p1, r, line, centre), {"theta0", "dtheta0"}, {}};
+  if (second) run.boundaries = boundaries(*second, run.family, r, line);
+  return run;
 }
 
 Run run_rotation(const ContinueArgs& a, double p0, double p1) {
@@ -132,7 +205,7 @@ Run run_rotation(const ContinueArgs& a, double p0, double p1) {
     throw InputError(sc.source + ": [field]: expected the quadratic field for --family rotation");
   }
   const QuadraticModel& m = sc.model.quadratic();
-  return {rotation_family(m, largest_axis(m.body), p0, p1), {"omega"}};
+  return {rotation_family(m, largest_axis(m.body), p0, p1), {"omega"}, {}};
 }
 
 Run run_equilibrium(const ContinueArgs& a, double p0, double p1) {
@@ -155,7 +228,7 @@ Run run_equilibrium(const ContinueArgs& a, double p0, double p1) {
                      ": [initial]: expected a relative equilibrium with the radius and "
                      "the orbit normal along principal axes (at rest in the orbital frame)");
   }
-  return {equilibrium_family(sc.body.inertia(), radial, normal, *i, p0, p1), {"A", "B", "C"}};
+  return {equilibrium_family(sc.body.inertia(), radial, normal, *i, p0, p1), {"A", "B", "C"}, {}};
 }
 
 io::Json point_json(const FamilyPoint& p, const std::vector<std::string>& names) {
@@ -167,6 +240,17 @@ io::Json point_json(const FamilyPoint& p, const std::vector<std::string>& names)
           {"period", p.period},
           {"multipliers", mult},
           {"stability", p.stability}};
+}
+
+void write_boundaries_csv(std::ostream& o, const Run& r, const ContinueArgs& a) {
+  o << "curve,type," << *a.second << ',' << a.parameter << ",theta0,dtheta0,stability\n";
+  for (std::size_t i = 0; i < r.boundaries.size(); ++i) {
+    for (const FamilyPoint& p : r.boundaries[i].points) {
+      o << i << ',' << to_string(r.boundaries[i].type) << ',' << format_number(p.parameter) << ','
+        << format_number(p.values[2]) << ',' << format_number(p.values[0]) << ','
+        << format_number(p.values[1]) << ',' << p.stability << '\n';
+    }
+  }
 }
 
 void write_csv(std::ostream& o, const Run& r) {
@@ -187,10 +271,12 @@ void write_csv(std::ostream& o, const Run& r) {
 }
 
 int run(const ContinueArgs& a) {
-  if (a.second || a.second_range) {
-    throw InputError(
-        "--second: two-parameter continuation of a bifurcation's locus is not "
-        "available yet");
+  if (a.second.has_value() != a.second_range.has_value()) {
+    throw InputError(std::string("--second and --second-range: expected both, found only ") +
+                     (a.second ? "--second" : "--second-range"));
+  }
+  if (a.second && a.family != "resonance") {
+    throw InputError("--second: applies only to --family resonance, found --family " + a.family);
   }
   if (a.family != "resonance" && (a.resonance || a.line)) {
     throw InputError(std::string(a.resonance ? "--resonance" : "--line") +
@@ -215,7 +301,11 @@ int run(const ContinueArgs& a) {
   if (a.out) {
     const std::string inputs[] = {a.scenario};
     io::AtomicFile file(*a.out, inputs);
-    write_csv(file.stream(), r);
+    if (a.second) {
+      write_boundaries_csv(file.stream(), r, a);
+    } else {
+      write_csv(file.stream(), r);
+    }
     file.commit();
   }
   io::Json points = io::Json::array(), events = io::Json::array();
@@ -230,6 +320,22 @@ int run(const ContinueArgs& a) {
   io::Json j{{"scenario", a.scenario}, {"family", a.family},  {"parameter", a.parameter},
              {"range", {p0, p1}},      {"end", r.family.end}, {"points", points},
              {"events", events}};
+  if (a.second) {
+    io::Json bs = io::Json::array();
+    for (const Boundary& b : r.boundaries) {
+      io::Json pts = io::Json::array();
+      for (const FamilyPoint& p : b.points) {
+        pts.push_back({{"second", p.parameter},
+                       {"parameter", p.values[2]},
+                       {"theta0", p.values[0]},
+                       {"dtheta0", p.values[1]},
+                       {"stability", p.stability}});
+      }
+      bs.push_back({{"type", to_string(b.type)}, {"end", b.end}, {"points", pts}});
+    }
+    j["second"] = *a.second;
+    j["boundaries"] = bs;
+  }
   if (a.out) j["csv"] = *a.out;
   if (a.json) {
     std::cout << j.dump(2) << '\n';
@@ -242,7 +348,11 @@ int run(const ContinueArgs& a) {
     std::cout << "  " << to_string(e.type) << " at " << a.parameter << " = "
               << format_number(e.value) << "\n";
   }
-  if (a.out) std::cout << "family written to " << *a.out << "\n";
+  for (const Boundary& b : r.boundaries) {
+    std::cout << "  " << to_string(b.type) << " curve in " << *a.second << ": " << b.points.size()
+              << " points (" << b.end << ")\n";
+  }
+  if (a.out) std::cout << (a.second ? "boundaries" : "family") << " written to " << *a.out << "\n";
   return kExitOk;
 }
 
@@ -261,8 +371,10 @@ const RegisterCommand reg{Command{
       sub.add_option("--range", a->range, "A:B, the parameter's first and last value")->required();
       sub.add_option("--resonance", a->resonance, "P:Q spin:orbit (resonance; default 1:1)");
       sub.add_option("--line", a->line, "theta(0) of the start: 0 or pi/2 (resonance; default 0)");
-      sub.add_option("--second", a->second, "second parameter (not available yet)");
-      sub.add_option("--second-range", a->second_range, "C:D (not available yet)");
+      sub.add_option("--second", a->second,
+                     "second key: each event's locus continued in it (resonance)");
+      sub.add_option("--second-range", a->second_range,
+                     "C:D, about the scenario's value of the second key");
       sub.add_option("--out", a->out, "the family as CSV");
       sub.add_flag("--json", a->json, "print one JSON object");
       return [a] { return run(*a); };

@@ -57,12 +57,23 @@ class Curve {
     MatrixXd j(n(), n() + 1);
     for (int i = 0; i <= n(); ++i) {
       const double h = kDifferenceStep * std::max(1.0, std::abs(x[i]));
-      VectorXd a = x, b = x;
-      a[i] += h;
-      b[i] -= h;
-      j.col(i) = (residual(a) - residual(b)) / (2 * h);
+      j.col(i) = difference(x, i, h);
     }
     return j;
+  }
+
+  /// ∂F/∂x_i by a central difference, or a one-sided one of the same order, (−3F(x) + 4F(x +
+  /// h) − F(x + 2h))/(2h), where x − h lies outside the family's domain (e < 0, no body).
+  VectorXd difference(const VectorXd& x, int i, double h) const {
+    VectorXd a = x, b = x;
+    a[i] += h;
+    b[i] -= h;
+    try {
+      return (residual(a) - residual(b)) / (2 * h);
+    } catch (const InputError&) {
+      b[i] += 3 * h;
+      return (4 * residual(a) - 3 * residual(x) - residual(b)) / (2 * h);
+    }
   }
 
   /// The unit null vector of [F_u F_p] at x, oriented along `previous`.

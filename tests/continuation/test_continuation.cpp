@@ -159,6 +159,33 @@ TEST(ContinuationResonance, AsymmetricPitchforkOfTheHalfSynchronousResonance) {
   EXPECT_NEAR(bp[0].value, 0.8803, 1e-4);  // docs/orbit.md §9: k ≈ 0.8803
 }
 
+TEST(ContinuationResonance, FoldAndFlipCurvesMeetTheOneParameterFamilies) {
+  // The plane (e, A) with B = C = 1, k = 1 − A. The odd family at k = 0.9 (A = 0.1): its first flip
+  // and its fold continued in A to A = 0.05 (k = 0.95) and the fold also to A = 0.5 (k = 0.5); the
+  // curves' last points (exactly at the range's end) against the one-parameter family at that k.
+  const PitchPlanePath plane = pitch_plane_path(Vec3(0.1, 1.0, 1.0), 0.0, kEccentricityKey, 0);
+  const Family f = resonance_family(eccentricity_path(0.9), 0.0, 0.6, resonance(1, 1), 0.0, 0.0);
+  const auto flips = of_type(f, BifurcationType::flip);
+  const auto folds = of_type(f, BifurcationType::fold);
+  ASSERT_FALSE(flips.empty());
+  ASSERT_EQ(folds.size(), 1u);
+  struct Case {
+    BifurcationEvent event;
+    double a_end;
+  };
+  for (const Case& c : {Case{flips[0], 0.05}, Case{folds[0], 0.05}, Case{folds[0], 0.5}}) {
+    const Family curve = resonance_boundary(plane, c.event, 0.1, c.a_end, resonance(1, 1), 0.0);
+    ASSERT_EQ(curve.end, "range");
+    const double k = 1 - c.a_end;
+    const Family there =
+        resonance_family(eccentricity_path(k), 0.0, 0.6, resonance(1, 1), 0.0, 0.0);
+    const auto expected = of_type(there, c.event.type);
+    ASSERT_FALSE(expected.empty()) << k;
+    EXPECT_NEAR(curve.points.back().values[2], expected[0].value, kLocated)
+        << to_string(c.event.type) << " at k = " << k;
+  }
+}
+
 // --- rotations: Beletsky's threshold as a Krein collision ------------------------------------
 
 TEST(ContinuationRotation, KreinCollisionIsBeletskysThreshold) {

@@ -66,6 +66,27 @@ TEST(ContinueCli, AMomentAsTheParameterIsTheInertiaPath) {
                    f.points.back().values[1]);
 }
 
+TEST(ContinueCli, SecondKeyGivesTheEventsCurves) {
+  // The fold of k = 0.9 continued in A (k = 1 − A) from 0.1 to 0.05: the curve's end is the
+  // library's.
+  const auto r =
+      test::run_newtop(kSynchronous +
+                       " --family resonance --parameter orbit.eccentricity --range "
+                       "0.3:0.6 --second body.inertia[0] --second-range 0.05:0.1 --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["boundaries"].size(), j["events"].size());
+  const Family f = resonance_family(eccentricity_path(0.9), 0.3, 0.6, resonance(1, 1), 0.0, 0.0);
+  const auto& fold = j["boundaries"].back();
+  ASSERT_EQ(fold["type"], "fold");
+  const Family curve =
+      resonance_boundary(pitch_plane_path(Vec3(0.1, 1.0, 1.0), 0.0, kEccentricityKey, 0),
+                         f.events.back(), 0.1, 0.05, resonance(1, 1), 0.0);
+  EXPECT_EQ(fold["points"].size(), curve.points.size());
+  EXPECT_DOUBLE_EQ(fold["points"][0]["second"].get<double>(), 0.05);  // ordered along C:D
+  EXPECT_DOUBLE_EQ(fold["points"][0]["parameter"].get<double>(), curve.points.back().values[2]);
+}
+
 TEST(ContinueCli, BadInputIsOneLineAndWritesNothing) {
   const std::string csv = test::scratch_path("continue_cli", "bad.csv").string();
   const std::string res = " --family resonance --parameter orbit.eccentricity";
@@ -77,7 +98,11 @@ TEST(ContinueCli, BadInputIsOneLineAndWritesNothing) {
            kSynchronous + res + " --range 0:1.2",             // e ≥ 1
            kSynchronous + res + " --range 0:0.5 --line 0.3",  // not a reversibility line
            kSynchronous + res + " --range 0:0.5 --resonance 1:0",
-           kSynchronous + res + " --range 0:0.5 --second body.inertia[1] --second-range 0.8:1",
+           kSynchronous + res + " --range 0:0.5 --second body.inertia[1]",
+           kSynchronous + res + " --range 0:0.5 --second orbit.eccentricity --second-range 0:1",
+           kSynchronous + res + " --range 0:0.5 --second body.inertia[0] --second-range 0.2:0.3",
+           kSynchronous + res + " --range 0:0.5 --second body.inertia[0] --second-range 0.05:3",
+           kSynchronous + res + " --range 0:0.5 --second stability.omega --second-range 0:1",
            kSynchronous + " --family resonance --parameter orbit.semi_major_axis --range 1:2",
            kSynchronous + " --family resonance --parameter body.inertia[0] --range 0.1:3",
            kSynchronous + " --family bogus --parameter orbit.eccentricity --range 0:0.5",
@@ -86,6 +111,8 @@ TEST(ContinueCli, BadInputIsOneLineAndWritesNothing) {
            beletsky +
                " --family rotation --parameter stability.omega --range 0.1:3 --resonance 1:1",
            beletsky + " --family rotation --parameter body.inertia[0] --range 0.1:3",
+           beletsky + " --family rotation --parameter stability.omega --range 0.1:3 --second "
+                      "body.inertia[0] --second-range 0.9:1.1",
            beletsky + " --family equilibrium --parameter body.inertia[0] --range 0.9:1.1",
        }) {
     const auto r = test::run_newtop(args + " --out " + csv, test::Stderr::separate);

@@ -37,6 +37,26 @@ PitchPath inertia_path(const Vec3& inertia, int index, double eccentricity);
 Family resonance_family(const PitchPath& path, double p0, double p1, const SpinOrbitResonance& r,
                         double line, double guess, const ContinuationSettings& settings = {});
 
+/// (e, k) as a function of two parameters (p, q): each is the eccentricity (code
+/// kEccentricityKey) or the principal moment 0, 1, 2 of `inertia` (k = (B − A)/C), the other
+/// values fixed at `inertia` and `eccentricity`. InputError for an unknown code or p, q the same.
+inline constexpr int kEccentricityKey = -1;
+using PitchPlanePath = std::function<PitchProblem(double p, double q)>;
+PitchPlanePath pitch_plane_path(const Vec3& inertia, double eccentricity, int p_key, int q_key);
+
+/// The locus of an event of the resonance family (fold, flip or branch_point, located at
+/// p = event.value for q = q0) continued in the second parameter q from q0 to q1 (docs/
+/// continuation.md §2): unknowns (θ′(0), p), residuals θ(πN) − line − Mπ/2 and the event's
+/// defining function: b = Φ₀₁(πN, 0) (fold), T + 2 (flip, T over the period in one piece),
+/// c = Φ₁₀(πN, 0) (branch_point). FamilyPoint: parameter q, values (θ(0), θ′(0), p), period,
+/// multipliers and stability of the periodic solution there. InputError for a Krein event.
+/// By default at most 400 points a curve: a curve that runs into the edge of the domain (e → 0 at
+/// the tip of a resonance tongue, where the two flip curves meet) ends there in small steps.
+inline const ContinuationSettings kBoundarySettings{.max_points = 400};
+Family resonance_boundary(const PitchPlanePath& path, const BifurcationEvent& event, double q0,
+                          double q1, const SpinOrbitResonance& r, double line,
+                          const ContinuationSettings& settings = kBoundarySettings);
+
 /// The relative equilibrium at rest in the orbital frame (circular orbit, rate 1) with the radius
 /// along body axis `radial` and the orbit normal along body axis `normal` (principal axes), as the
 /// principal moment `index` of `inertia` moves from p0 to p1 (docs/continuation.md §4); the
