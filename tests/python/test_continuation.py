@@ -47,3 +47,24 @@ def test_rotation_family_finds_beletskys_threshold():
 def test_bad_input_is_value_error():
     with pytest.raises(ValueError, match="parameter"):
         newtop.resonance_family(0.0, 0.9, "omega", 0.6)
+
+
+def test_bifurcation_diagram_is_drawn(tmp_path):
+    from newtop import plot, results
+
+    out = tmp_path / "family.json"
+    p = subprocess.run([EXE, "continue", os.path.join(ROOT, "examples", "continue_synchronous.toml"),
+                        "--family", "resonance", "--parameter", "orbit.eccentricity",
+                        "--range", "0.3:0.6", "--second", "body.inertia[0]",
+                        "--second-range", "0.05:0.2", "--json"],
+                       capture_output=True, text=True, check=True)
+    out.write_text(p.stdout)
+    res = results.load(out)
+    assert res.kind == "continuation"
+    fig = plot.figure(res)
+    family, chart = fig.axes[:2]
+    assert family.get_xlabel() == "orbit.eccentricity"
+    assert chart.get_xlabel() == "body.inertia[0]"
+    assert len(chart.get_lines()) == len(json.loads(p.stdout)["boundaries"])
+    plot.save(fig, tmp_path / "family.png")
+    assert (tmp_path / "family.png").stat().st_size > 0
