@@ -3,12 +3,14 @@
 /// Umbrella header: the whole library (io/ excluded: link newtop::io and include its headers).
 
 #include "newtop/analysis/analytic.hpp"
+#include "newtop/analysis/continuation.hpp"
 #include "newtop/analysis/equilibria.hpp"
 #include "newtop/analysis/euler_poinsot.hpp"
 #include "newtop/analysis/find_integrals.hpp"
 #include "newtop/analysis/lagrange_attitude.hpp"
 #include "newtop/analysis/lagrange_case.hpp"
 #include "newtop/analysis/pendulum.hpp"
+#include "newtop/analysis/rotation_family.hpp"
 #include "newtop/analysis/rotations.hpp"
 #include "newtop/analysis/stability.hpp"
 #include "newtop/analysis/stability_spin.hpp"

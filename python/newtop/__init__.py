@@ -15,8 +15,8 @@ __version__ = "0.1.0"
 
 try:  # the compiled extension, when the build made one (PYTHONPATH=build/python)
     from ._newtop import (Body, InputError, MassModel, Model, QuadraticField, Scenario, State,  # noqa: F401
-                          conserved_integrals, integrate, is_orbit_scenario, load_scenario,
-                          parse_scenario)
+                          conserved_integrals, equilibrium_family, integrate, is_orbit_scenario,
+                          load_scenario, parse_scenario, resonance_family, rotation_family)
     from ._newtop import integrals as integrals_at  # noqa: F401  (the library's, at a state)
     from .commands import (analytic, chaos, equilibria, field, find_integrals, integrals,  # noqa: F401
                            libration, rotations, section, simulate, stability, sweep,

@@ -165,6 +165,12 @@ def simulate_figure(sim: Result, equilibria=None, panel="all") -> Figure:
 
 # --- dispatch and command line -----------------------------------------------------------------
 
+def _continuation_figure(res: Result) -> Figure:
+    from ._plot_continuation import continuation_figure
+
+    return continuation_figure(res)
+
+
 def figure(res: Result, equilibria: Result | None = None, panel="all", quantity=None,
            scenario=None) -> Figure:
     """The figure for any newtop result (the kind decides). scenario: the scenario file the result
@@ -189,6 +195,7 @@ def figure(res: Result, equilibria: Result | None = None, panel="all", quantity=
         "sweep": lambda: ph.sweep_figure(res, quantity),
         "chaos_history": lambda: ph.chaos_history_figure(res),
         "chaos": lambda: ph.chaos_figure(res),
+        "continuation": lambda: _continuation_figure(res),
     }
     return makers[res.kind]()
 

@@ -14,7 +14,8 @@ section        CSV header ``orbit,t,p,q,r,gamma1,gamma2,gamma3,...`` (``section 
 chaos_history  CSV with ``t`` and any of ``megno``, ``lyapunov_max``, ``fli`` (``chaos --out``)
 sweep          CSV with a ``status`` column (``sweep --out FILE.csv``)
 simulate, integrals, field, equilibria, rotations, stability, analytic, find_integrals, section,
-chaos          JSON objects (``--json``), by their keys
+chaos,
+continuation   JSON objects (``--json``), by their keys
 ============== ====================================================================================
 
 Anything else raises :class:`UnrecognisedResult` with one line naming the file, what was expected
@@ -46,6 +47,7 @@ SWEEP_QUANTITY_COLUMNS = (
 #: JSON kinds and the keys that identify them, most specific first.
 JSON_KINDS = [
     ("simulate", ("method", "outcome", "final", "integrals")),
+    ("continuation", ("family", "points", "events")),
     ("field", ("mass_properties", "exact", "approx")),
     ("equilibria", ("equilibria", "count_rule")),
     ("rotations", ("principal_axes_any_omega", "cone_samples")),

@@ -18,4 +18,7 @@ void bind_trajectory(pybind11::module_& m);
 /// package (command_line.cpp).
 void bind_command_line(pybind11::module_& m);
 
+/// resonance_family, rotation_family, equilibrium_family (continuation.cpp).
+void bind_continuation(pybind11::module_& m);
+
 }  // namespace newtop::python

@@ -1,0 +1,38 @@
+#pragma once
+// newtop continue (continue.cpp): the arguments, the computed family and its report
+// (continue_output.cpp).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "newtop/analysis/continuation.hpp"
+#include "newtop/io/output.hpp"
+
+namespace newtop::app {
+
+/// The command line (docs/cli.md, continue).
+struct ContinueArgs {
+  std::string scenario, family, parameter, range;
+  std::optional<std::string> resonance, line, second, second_range, out;
+  bool json = false;
+};
+
+/// A located event's locus in the second key (--second).
+struct Boundary {
+  BifurcationType type = BifurcationType::fold;
+  std::vector<FamilyPoint> points;  // in the order of the second parameter's range
+  std::string end;
+};
+
+/// The family computed, the names of its values, and the boundaries.
+struct Run {
+  Family family;
+  std::vector<std::string> names;  // of FamilyPoint::values
+  std::vector<Boundary> boundaries;
+};
+
+/// Writes the CSV into `file` (when given) and commits it, then prints the JSON or the summary.
+int report(const ContinueArgs& a, const Run& r, double p0, double p1, io::AtomicFile* file);
+
+}  // namespace newtop::app

@@ -1,0 +1,256 @@
+// Pseudo-arclength continuation with located test functions (docs/continuation.md).
+
+#include "newtop/analysis/continuation.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <boost/math/tools/toms748_solve.hpp>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+
+#include "newtop/core/types.hpp"
+
+namespace newtop {
+
+const char* to_string(BifurcationType t) {
+  switch (t) {
+    case BifurcationType::fold:
+      return "fold";
+    case BifurcationType::flip:
+      return "flip";
+    case BifurcationType::branch_point:
+      return "branch_point";
+    case BifurcationType::krein:
+      break;
+  }
+  return "krein";
+}
+
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+// Relative step of the central differences of F when the family gives no Jacobian: ε^(1/3)
+// balances truncation (h²) and round-off (ε/h) for a residual of unit scale.
+constexpr double kDifferenceStep = 6e-6;
+// Bits of the TOMS 748 bracket on the chord's arclength: 50 of 53 leave the located zero a few
+// ulps of the chord's length from the test function's root.
+constexpr int kLocationBits = 50;
+constexpr std::uintmax_t kLocationIterations = 100;
+
+/// The family in the (n + 1)-vector X = (u, p).
+class Curve {
+ public:
+  Curve(const ContinuationProblem& p, const ContinuationSettings& s) : pr_(p), set_(s) {}
+  int n() const { return pr_.unknowns; }
+
+  VectorXd residual(const VectorXd& x) const {
+    return n() == 0 ? VectorXd() : pr_.residual(x.head(n()), x[n()]);
+  }
+
+  MatrixXd jacobian(const VectorXd& x) const {
+    if (n() == 0) return MatrixXd(0, 1);
+    if (pr_.jacobian) return pr_.jacobian(x.head(n()), x[n()]);
+    MatrixXd j(n(), n() + 1);
+    for (int i = 0; i <= n(); ++i) {
+      const double h = kDifferenceStep * std::max(1.0, std::abs(x[i]));
+      j.col(i) = difference(x, i, h);
+    }
+    return j;
+  }
+
+  /// ∂F/∂x_i by a central difference, or a one-sided one of the same order, (−3F(x) + 4F(x +
+  /// h) − F(x + 2h))/(2h), where x − h lies outside the family's domain (e < 0, no body).
+  VectorXd difference(const VectorXd& x, int i, double h) const {
+    VectorXd a = x, b = x;
+    a[i] += h;
+    b[i] -= h;
+    try {
+      return (residual(a) - residual(b)) / (2 * h);
+    } catch (const InputError&) {
+      b[i] += 3 * h;
+      return (4 * residual(a) - 3 * residual(x) - residual(b)) / (2 * h);
+    }
+  }
+
+  /// The unit null vector of [F_u F_p] at x, oriented along `previous`.
+  VectorXd tangent(const VectorXd& x, const VectorXd& previous) const {
+    MatrixXd a(n() + 1, n() + 1);
+    a.topRows(n()) = jacobian(x);
+    a.row(n()) = previous.transpose();
+    VectorXd rhs = VectorXd::Zero(n() + 1);
+    rhs[n()] = 1.0;
+    VectorXd t = a.fullPivLu().solve(rhs);
+    t.normalize();
+    return t.dot(previous) < 0 ? VectorXd(-t) : t;
+  }
+
+  /// Newton's method on F(X) = 0 and normal·(X − anchor) = 0 from `guess`; the iterations, or
+  /// nullopt when it does not converge within max_newton steps.
+  std::optional<int> correct(VectorXd& x, const VectorXd& normal, const VectorXd& anchor) const {
+    try {
+      return newton(x, normal, anchor);
+    } catch (const InputError&) {  // an iterate left the family's domain (e < 0, no body)
+      return std::nullopt;
+    }
+  }
+
+  std::optional<int> newton(VectorXd& x, const VectorXd& normal, const VectorXd& anchor) const {
+    for (int it = 0; it <= set_.max_newton; ++it) {
+      VectorXd g(n() + 1);
+      g.head(n()) = residual(x);
+      g[n()] = normal.dot(x - anchor);
+      if (!g.allFinite()) return std::nullopt;
+      MatrixXd a(n() + 1, n() + 1);
+      a.topRows(n()) = jacobian(x);
+      a.row(n()) = normal.transpose();
+      const VectorXd dx = a.fullPivLu().solve(g);
+      if (!dx.allFinite()) return std::nullopt;
+      x -= dx;
+      const double scale = std::max(1.0, x.cwiseAbs().maxCoeff());
+      if (dx.cwiseAbs().maxCoeff() <= set_.tolerance * scale &&
+          (n() == 0 || residual(x).cwiseAbs().maxCoeff() <= set_.tolerance * 10)) {
+        return it + 1;
+      }
+    }
+    return std::nullopt;
+  }
+
+  /// The family's evaluation at x with the fold's test function dp/ds from the tangent.
+  FamilyPoint evaluate(const VectorXd& x, const VectorXd& t) const {
+    FamilyPoint f = pr_.evaluate(x.head(n()), x[n()]);
+    if (f.values.size() == 0) f.values = x.head(n());
+    f.parameter = x[n()];
+    f.tangent_parameter = t[n()];
+    return f;
+  }
+
+  const ContinuationProblem& problem() const { return pr_; }
+  const ContinuationSettings& settings() const { return set_; }
+
+ private:
+  const ContinuationProblem& pr_;
+  const ContinuationSettings& set_;
+};
+
+double test_value(const FamilyPoint& f, int j) { return j < 0 ? f.tangent_parameter : f.tests[j]; }
+
+/// The zeros of the test functions between two accepted points a and b, located along the chord.
+void locate_events(const Curve& c, const VectorXd& xa, const FamilyPoint& fa, const VectorXd& xb,
+                   const FamilyPoint& fb, std::vector<BifurcationEvent>& events) {
+  const double length = (xb - xa).norm();
+  if (!(length > 0)) return;
+  const VectorXd d = (xb - xa) / length;
+  const int count = static_cast<int>(c.problem().tests.size());
+  for (int j = -1; j < count; ++j) {
+    const double ga = test_value(fa, j), gb = test_value(fb, j);
+    if (!(std::isfinite(ga) && std::isfinite(gb)) || ga == 0 || (ga < 0) == (gb < 0)) continue;
+    FamilyPoint at;
+    auto g = [&](double sigma) {
+      VectorXd x = xa + sigma * d;
+      if (!c.correct(x, d, xa + sigma * d)) return std::numeric_limits<double>::quiet_NaN();
+      at = c.evaluate(x, c.tangent(x, d));
+      return test_value(at, j);
+    };
+    double root = length;
+    if (gb != 0) {
+      std::uintmax_t iterations = kLocationIterations;
+      const auto r = boost::math::tools::toms748_solve(
+          g, 0.0, length, ga, gb, boost::math::tools::eps_tolerance<double>(kLocationBits),
+          iterations);
+      root = 0.5 * (r.first + r.second);
+    }
+    if (!std::isfinite(g(root))) continue;
+    const BifurcationType type = j < 0 ? BifurcationType::fold : c.problem().tests[j].type;
+    if (j >= 0 && c.problem().tests[j].confirm && !c.problem().tests[j].confirm(at)) continue;
+    events.push_back({type, at.parameter, at});
+  }
+}
+
+/// Newton's method in u at fixed p (the start, and the last point exactly at p_end).
+bool solve_at(const Curve& c, VectorXd& x) {
+  VectorXd normal = VectorXd::Zero(c.n() + 1);
+  normal[c.n()] = 1.0;
+  return c.correct(x, normal, x).has_value();
+}
+
+}  // namespace
+
+Family continue_family(const ContinuationProblem& problem, const VectorXd& u0, double p0,
+                       double p_end, const ContinuationSettings& settings) {
+  if (problem.unknowns < 0 || u0.size() != problem.unknowns || !u0.allFinite() ||
+      !std::isfinite(p0) || !std::isfinite(p_end) || p0 == p_end) {
+    throw InputError("continuation: expected a finite start of " +
+                     std::to_string(problem.unknowns) + " values and a range p0 != p_end");
+  }
+  const Curve c(problem, settings);
+  const int n = problem.unknowns;
+  const double dir = p_end > p0 ? 1.0 : -1.0;
+  VectorXd x(n + 1);
+  x << u0, p0;
+  if (!solve_at(c, x)) {
+    throw InputError(
+        "continuation: Newton's method found no solution of the family near the "
+        "start at p = " +
+        format_number(p0));
+  }
+  VectorXd axis = VectorXd::Zero(n + 1);
+  axis[n] = dir;
+  VectorXd t = c.tangent(x, axis);
+  Family fam;
+  fam.points.push_back(c.evaluate(x, t));
+  double h = settings.initial_step;
+  fam.end = "max_points";
+  while (static_cast<int>(fam.points.size()) < settings.max_points) {
+    VectorXd y = x + h * t;
+    if ((y[n] - p0) * dir < 0) {  // the predictor turned back past the start
+      fam.end = "left_range";
+      break;
+    }
+    const std::optional<int> its = c.correct(y, t, y);
+    const VectorXd ty = its ? c.tangent(y, t) : t;
+    const bool turned = its && std::acos(std::clamp(ty.dot(t), -1.0, 1.0)) > settings.max_angle;
+    if (!its || turned) {
+      h /= 2;
+      if (h < settings.min_step) {
+        fam.end = "step_underflow";
+        break;
+      }
+      continue;
+    }
+    const double p = y[n];
+    if ((p - p0) * dir < 0) {  // turned back past the start
+      fam.end = "left_range";
+      break;
+    }
+    bool last = false;
+    if ((p - p_end) * dir >= 0) {  // past the end: the last point exactly at p_end
+      const double w = (p_end - x[n]) / (p - x[n]);
+      y = x + w * (y - x);
+      y[n] = p_end;
+      if (!solve_at(c, y)) {
+        fam.end = "step_underflow";
+        break;
+      }
+      last = true;
+    }
+    const VectorXd t_new = c.tangent(y, t);
+    FamilyPoint fy = c.evaluate(y, t_new);
+    locate_events(c, x, fam.points.back(), y, fy, fam.events);
+    fam.points.push_back(std::move(fy));
+    x = y;
+    t = t_new;
+    if (last) {
+      fam.end = "range";
+      break;
+    }
+    if (*its <= 2) h = std::min(1.5 * h, settings.max_step);
+    if (*its >= 5) h *= 0.7;
+  }
+  return fam;
+}
+
+}  // namespace newtop
