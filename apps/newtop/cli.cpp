@@ -26,6 +26,20 @@ int bad_input(std::string what) {
 
 namespace {
 
+bool quiet_flag = false;  // --quiet of the running subcommand
+
+}  // namespace
+
+void warn(std::string what) {
+  if (quiet_flag) return;
+  std::replace(what.begin(), what.end(), '\n', ' ');
+  std::cerr << "newtop: warning: " << what << '\n';
+}
+
+bool quiet() { return quiet_flag; }
+
+namespace {
+
 // `word` (a subcommand, an option of `where`) is not one of `names`: say so, with the closest
 // name or the list.
 std::string unknown(const std::string& kind, const std::string& word, const std::string& where,
@@ -62,6 +76,7 @@ int run_newtop(int argc, char** argv, bool remove_partial_files_on_signals) {
       "(Euler–Poisson equations, first integrals, geometric integrators)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "newtop 0.1.0");
+  quiet_flag = false;  // the Python module runs the command line more than once in a process
   auto& cmds = commands();
   std::sort(cmds.begin(), cmds.end(),
             [](const Command& a, const Command& b) { return a.name < b.name; });
@@ -70,6 +85,8 @@ int run_newtop(int argc, char** argv, bool remove_partial_files_on_signals) {
   for (const auto& c : cmds) {
     CLI::App* sub = app.add_subcommand(c.name, c.description);
     actions.emplace_back(sub, c.setup(*sub));
+    sub->add_flag("--quiet", quiet_flag,
+                  "silence warnings (and sweep's progress) on stderr; errors are still printed");
     names.push_back(c.name);
   }
   // The first word names the subcommand: an unknown one is named with the closest subcommand.

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 
+#include "cli.hpp"
 #include "command.hpp"
 #include "integration_options.hpp"
 #include "interrupt.hpp"
@@ -135,9 +136,9 @@ int run(const SectionArgs& a) {
   }
   const bool empty = starts.empty();
   if (empty) {
-    std::cerr << "newtop: warning: the level energy = " << format_number(levels->energy)
-              << ", area = " << format_number(levels->area) << " does not meet the surface '"
-              << surface.text << "': no orbit\n";
+    warn("the level energy = " + format_number(levels->energy) +
+         ", area = " + format_number(levels->area) + " does not meet the surface '" + surface.text +
+         "': no orbit");
   }
   const std::string stopped_by = all_by_crossings && !empty ? "crossings" : "t_end";
   if (a.json) {

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 
+#include "cli.hpp"
 #include "command.hpp"
 #include "integration_options.hpp"
 #include "interrupt.hpp"
@@ -210,7 +211,7 @@ int run_in(const SimulateArgs& a, const io::Scenario& sc) {
       sc,           plan.method, out, drift.initial, integrals(model, out.state), drift.max_drift,
       plan.out_path};
   rep.casimir = casimir_check(drift.initial, drift.max_drift, drift.max_m);
-  if (rep.casimir.exceeded()) std::cerr << "newtop: warning: " << rep.casimir.warning() << '\n';
+  if (rep.casimir.exceeded()) warn(rep.casimir.warning());
   print_report(a, sc, rep, q);
   return out.status == Status::finished ? kExitOk : kExitIncomplete;
 }

@@ -28,7 +28,7 @@ struct SweepArgs {
   std::string sweep;
   std::optional<int> threads;
   std::optional<std::string> out;
-  bool resume = false, quiet = false, json = false;
+  bool resume = false, json = false;
 };
 
 /// A cell: empty for a failed point or an inconclusive verdict (never a number for them).
@@ -146,7 +146,7 @@ int run_rank(const SweepArgs& a, const MpiSession& mpi) {
   }
   if (!mpi.confirm(error.empty())) throw InputError(error);
   const InterruptGuard guard;
-  Progress progress(a.quiet);
+  Progress progress(quiet());
   sweep::RunOptions o;
   o.threads = a.threads.value_or(0);
   o.resume = a.resume;
@@ -241,7 +241,6 @@ const RegisterCommand reg{Command{
       sub.add_option("--threads", a->threads, "threads (default: all cores)");
       sub.add_option("--out", a->out, "write the results to this CSV or HDF5 (.h5) file");
       sub.add_flag("--resume", a->resume, "complete an interrupted sweep from OUT.checkpoint");
-      sub.add_flag("--quiet", a->quiet, "no progress on stderr");
       sub.add_flag("--json", a->json, "print one JSON object (with every column)");
       return [a] { return run(*a); };
     }}};
