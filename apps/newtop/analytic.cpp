@@ -215,7 +215,7 @@ int run(const AnalyticArgs& a) {
     }
     if (a.json) {
       j["field"] = field_json(sc.model);
-      std::cout << j.dump(2) << '\n';
+      print_json(std::cout, j);
     } else {
       std::cout << "newtop analytic " << sc.source << "\ncase      " << to_string(det.kind)
                 << "\n          " << det.reason << "\n";
@@ -244,7 +244,7 @@ int run(const AnalyticArgs& a) {
   }
   if (a.json) {
     j["field"] = field_json(sc.model);
-    std::cout << j.dump(2) << '\n';
+    print_json(std::cout, j);
   } else {
     print_summary(sc, det, j, c, times.size());
   }

@@ -250,8 +250,7 @@ const RegisterCommand reg{Command{
       dt->excludes(times);
       sub.add_option("--euler", a->euler,
                      "with an attitude: add the Euler angles 321 (psi, theta, phi) or 313 (phi, "
-                     "theta, psi) to the CSV")
-          ->check(CLI::IsMember({321, 313}));
+                     "theta, psi) to the CSV (321 or 313)");
       sub.add_flag("--json", a->json, "print one JSON object instead of the summary");
       return [a] { return run(*a); };
     }}};

@@ -145,6 +145,11 @@ int run_rank(const SweepArgs& a, const MpiSession& mpi) {
     }
   }
   if (!mpi.confirm(error.empty())) throw InputError(error);
+  // Checked, then closed at once: a sweep killed while it runs (SIGKILL, or a rank lost under
+  // mpirun) leaves its checkpoint and no temporary beside it; the file is opened again, under a
+  // fresh temporary, only to write the results.
+  const bool write_out = file != nullptr;
+  file.reset();
   const InterruptGuard guard;
   Progress progress(quiet());
   sweep::RunOptions o;
@@ -175,13 +180,13 @@ int run_rank(const SweepArgs& a, const MpiSession& mpi) {
     off_level += r.status == "off_level";
     failed += r.status != "ok" && r.status != "off_level";
   }
-  if (file && hdf5) {
-    file.reset();  // the checked name; HDF5 writes its own temporary and renames it
-    write_hdf5(*a.out, s, run);
+  if (write_out && hdf5) {
+    write_hdf5(*a.out, s, run);  // HDF5 writes its own temporary and renames it
     std::remove(o.checkpoint.c_str());
-  } else if (file) {
-    write_csv(file->stream(), s, run);
-    file->commit();
+  } else if (write_out) {
+    io::AtomicFile out(*a.out, s.input_files);
+    write_csv(out.stream(), s, run);
+    out.commit();
     std::remove(o.checkpoint.c_str());
   }
   if (a.json) {
@@ -209,7 +214,10 @@ int run_rank(const SweepArgs& a, const MpiSession& mpi) {
   if (off_level) std::cout << ", " << off_level << " off the energy level";
   std::cout << "\n";
   if (a.out) std::cout << "results: " << *a.out << "\n";
-  if (!a.out) write_csv(std::cout, s, run);
+  if (!a.out) {
+    print_units_line(std::cout);  // before the table, so that the table ends the output
+    write_csv(std::cout, s, run);
+  }
   return kExitOk;
 }
 

@@ -79,7 +79,9 @@ struct SectionObserver {
       }
       return;
     }
-    if (kept(g_prev, gx)) locate(t, x);
+    // The direction is that of g in time: on a backward run (t < t_prev) g goes from gx at the
+    // earlier time to g_prev at the later one.
+    if (t > t_prev ? kept(g_prev, gx) : kept(gx, g_prev)) locate(t, x);
     t_prev = t;
     x_prev = x;
     g_prev = gx;
@@ -95,7 +97,9 @@ struct SectionObserver {
     }
     std::uintmax_t iters = 100;
     const auto tol = boost::math::tools::eps_tolerance<double>(std::numeric_limits<double>::digits);
-    const auto r = boost::math::tools::toms748_solve(f, 0.0, h, g_prev, f_end, tol, iters);
+    // TOMS 748 takes its bracket in increasing order: [h, 0] on a backward run.
+    const auto r = h > 0 ? boost::math::tools::toms748_solve(f, 0.0, h, g_prev, f_end, tol, iters)
+                         : boost::math::tools::toms748_solve(f, h, 0.0, f_end, g_prev, tol, iters);
     const X a = map(t_prev, x_prev, r.first), b = map(t_prev, x_prev, r.second);
     if (std::abs(g(a)) <= std::abs(g(b))) {
       record(t_prev + r.first, a);
