@@ -66,7 +66,7 @@ TEST(ScenarioKeys, LambdaAloneWhereGCannotMatter) {
   EXPECT_EQ(alone.model.quadratic().field.g, written.model.quadratic().field.g);
   EXPECT_EQ(alone.model.quadratic().field.lambda_, written.model.quadratic().field.lambda_);
   expect_rejected("lambda_without_g", with_field("lambda = 3\n"),
-                  ":7:1: [field] g: missing: lambda needs g (where the centre of mass r0 is not "
+                  ":5:1: [field] g: missing: lambda needs g (where the centre of mass r0 is not "
                   "0)");
 }
 

@@ -11,16 +11,18 @@ if(NOT rc EQUAL 0)
   message("SKIP: mpirun cannot start processes here (exit ${rc}): ${err}")
   return()
 endif()
-# A MEGNO map long enough (seconds) to be killed while it runs.
+# A MEGNO map long enough (seconds on any machine) to be killed while it runs.
 file(WRITE ${DIR}/slow.toml "scenario = \"${SCENARIO}\"\nquantities = [\"megno\"]\n"
-     "[[axes]]\nkey = \"initial.omega[0]\"\nstart = -1.5\nstop = 1.5\ncount = 8\n"
-     "[[axes]]\nkey = \"initial.omega[1]\"\nstart = -1.5\nstop = 1.5\ncount = 8\n"
-     "[integrate]\nt_end = 2000.0\nstep = 0.02\n")
-# mpirun in the background; after 2 s, SIGKILL to its last child (a worker rank).
+     "[[axes]]\nkey = \"initial.omega[0]\"\nstart = -1.5\nstop = 1.5\ncount = 10\n"
+     "[[axes]]\nkey = \"initial.omega[1]\"\nstart = -1.5\nstop = 1.5\ncount = 10\n"
+     "[integrate]\nt_end = 3000.0\nstep = 0.02\n")
+# mpirun in the background; once the first points are in the checkpoint (the sweep is running),
+# SIGKILL to its last child (a worker rank).
 string(REPLACE ";" " " mpi_line "${mpi}")
 file(WRITE ${DIR}/abort.sh
      "${mpi_line} ${NEWTOP} sweep ${DIR}/slow.toml --quiet --out ${DIR}/out.csv &\n"
-     "mp=$!\nsleep 2\nw=$(pgrep -P $mp | tail -n 1)\n"
+     "mp=$!\nfor i in $(seq 600); do [ -s ${DIR}/out.csv.checkpoint ] && break; sleep 0.1; done\n"
+     "w=$(pgrep -P $mp | tail -n 1)\n"
      "if [ -z \"$w\" ]; then echo 'no worker to kill'; wait $mp; exit 10; fi\n"
      "kill -9 $w\nwait $mp\nexit 0\n")
 execute_process(COMMAND sh ${DIR}/abort.sh RESULT_VARIABLE rc OUTPUT_VARIABLE out

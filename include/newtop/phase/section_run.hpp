@@ -40,6 +40,7 @@ struct SectionObserver {
   SectionRun& run;
   std::int64_t found = 0;
   bool first = true;
+  bool on_surface = false;  ///< the previous point is a seed on the surface
   double t_prev = 0, g_prev = 0;
   X x_prev;
 
@@ -75,8 +76,16 @@ struct SectionObserver {
       g_prev = gx;
       if (settings.start_on_surface) {
         g_prev = 0.0;  // on the surface: the next sign change is the next crossing
+        on_surface = true;
         record(t, x);
       }
+      return;
+    }
+    if (on_surface) {  // the first step leaves the seed's crossing (backward: 0 ends that step)
+      on_surface = false;
+      t_prev = t;
+      x_prev = x;
+      g_prev = gx;
       return;
     }
     // The direction is that of g in time: on a backward run (t < t_prev) g goes from gx at the
