@@ -6,11 +6,11 @@
 #include <algorithm>
 #include <charconv>
 #include <iostream>
+#include <limits>
 #include <stdexcept>
 
 #include "command.hpp"
 #include "interrupt.hpp"
-#include "newtop/analysis/find_integrals.hpp"
 #include "newtop/analysis/rotations.hpp"
 #include "newtop/core/types.hpp"
 #include "newtop/integrate/options.hpp"
@@ -141,7 +141,8 @@ const std::vector<IntegerRange>& integer_ranges() {
   static const std::vector<IntegerRange> r{
       {"analytic", "samples", 1, 1'000'000},
       {"find-integrals", "degree", 1, 6},
-      {"find-integrals", "points", 1, kMaxConditionEntries},
+      // The library bounds the points further, by the degree (kMaxConditionEntries entries).
+      {"find-integrals", "points", 1, std::numeric_limits<int>::max()},
       {"libration", "iterates", 1, 100'000},
       {"rotations", "samples", 2, kMaxRotationSamples},
       {"section", "crossings", 1, 1'000'000'000},
