@@ -110,6 +110,31 @@ TEST(SpansCli, BackwardChaosGivesIndicators) {
   EXPECT_NE(h.out.find("(the backward flow from t0 = 0)"), std::string::npos) << h.out;
 }
 
+// sweep's megno: a backward span gives the backward flow's indicators (never zeros), a span of no
+// length is refused in one line before any point runs.
+TEST(SpansCli, SweepSpans) {
+  auto sweep = [](const std::string& t_end) {
+    const fs::path p = newtop::test::scratch_path("newtop_spans", "sweep" + t_end + ".toml");
+    newtop::test::write_text(p, "scenario = \"" + example("section_chaotic.toml") +
+                                    "\"\nquantities = [\"megno\", \"lyapunov_max\"]\n"
+                                    "[[axes]]\nkey = \"initial.omega[0]\"\nstart = -1.5\n"
+                                    "stop = 1.5\ncount = 2\n[integrate]\nt_end = " +
+                                    t_end + "\nstep = 0.02\n");
+    return run("sweep " + p.string() + " --threads 1 --json");
+  };
+  const CliResult back = sweep("-20.0");
+  ASSERT_EQ(back.code, 0) << back.err;
+  const auto j = nlohmann::json::parse(back.out);
+  for (const char* q : {"megno", "lyapunov_max"}) {
+    for (const auto& v : j["results"][q]) EXPECT_GT(v.get<double>(), 0.0) << q;
+  }
+  const CliResult none = sweep("0.0");
+  EXPECT_EQ(none.code, 2);
+  EXPECT_EQ(lines(none.err).size(), 1u) << none.err;
+  EXPECT_NE(none.err.find("t_end: expected a time different from t0"), std::string::npos)
+      << none.err;
+}
+
 // --crossings without a t_end runs until the crossings; the cap is reported.
 TEST(SpansCli, CrossingsWithoutTEndRunUntilThem) {
   const CliResult r = run("section " + no_t_end() + " --surface 'gamma3 = 0' --crossings 7 --json");
