@@ -82,6 +82,7 @@ int run(const ChaosArgs& a) {
     if (adaptive) j["tol"] = run.method.abs_tol;
     if (split) j["split"] = *split;
     j["outcome"] = to_string(r.outcome.status);
+    j["flow"] = run.t_end > run.t0 ? "forward" : "backward";
     print_json(std::cout, j);
   } else {
     std::cout << "lambda_max = " << format_number(c.lyapunov_max)
@@ -92,8 +93,11 @@ int run(const ChaosArgs& a) {
       for (double v : *c.spectrum) std::cout << ' ' << format_number(v);
       std::cout << '\n';
     }
-    std::cout << "t = " << format_number(r.outcome.t) << ", method " << run.method.name
-              << (adaptive ? ", tol " : ", step ")
+    std::cout << "t = " << format_number(r.outcome.t)
+              << (run.t_end < run.t0
+                      ? " (the backward flow from t0 = " + format_number(run.t0) + ")"
+                      : std::string())
+              << ", method " << run.method.name << (adaptive ? ", tol " : ", step ")
               << format_number(adaptive ? run.method.abs_tol : run.method.step)
               << (split ? " (" + *split + " split)" : std::string()) << ", outcome "
               << to_string(r.outcome.status) << '\n';

@@ -8,6 +8,14 @@ namespace newtop::app {
 /// Bad input: one line on std::cerr, "newtop: error: WHAT", and returns the exit code 2.
 int bad_input(std::string what);
 
+/// A warning: one line on std::cerr, "newtop: warning: WHAT" (newlines become spaces), unless the
+/// subcommand was given --quiet (every subcommand takes it). A warning never changes the exit
+/// code; a JSON report that lists its warnings lists them whether or not --quiet was given.
+void warn(std::string what);
+
+/// Whether --quiet was given to the running subcommand.
+bool quiet();
+
 /// Parses argv (argv[0] is the program's name), runs the chosen subcommand with its output on
 /// std::cout and its messages on std::cerr, and returns the exit code of docs/cli.md. With
 /// remove_partial_files_on_signals, SIGINT and SIGTERM outside a run's own handling remove the

@@ -182,7 +182,7 @@ int run(const FieldArgs& a) {
                  {"slope_moment", loglog_slope(Rs, dL)}};
   }
   if (a.json) {
-    std::cout << j.dump(2) << '\n';
+    print_json(std::cout, j);
     return kExitOk;
   }
   std::cout << "newtop field " << sc.source << "\nmu = " << format_number(mu)

@@ -81,7 +81,7 @@ int run(const FindArgs& a) {
   if (a.json) {
     io::Json j = search_json(s);
     if (!a.potential) j["field"] = field_json(sc.model);
-    std::cout << j.dump(2) << '\n';
+    print_json(std::cout, j);
   } else {
     std::cout << "newtop find-integrals " << sc.source
               << (a.potential ? " with V(gamma) from " + *a.potential : std::string()) << "\n";

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 
+#include "cli.hpp"
 #include "command.hpp"
 #include "integration_options.hpp"
 #include "interrupt.hpp"
@@ -21,7 +22,7 @@ namespace {
 struct SectionArgs {
   std::string scenario, surface, direction = "up";
   IntegrationArgs integration;
-  std::int64_t crossings = 1000;
+  std::optional<std::int64_t> crossings;
   std::optional<int> orbits;
   std::optional<double> energy, area;
   std::optional<std::string> out;
@@ -72,13 +73,65 @@ void write_csv(std::ostream& os, const std::vector<phase::Crossing>& cs, const B
   }
 }
 
+/// --crossings without a t_end: the run stops at the crossings, or at this many steps per orbit
+/// ([integrate] max_steps sets another cap; docs/section.md).
+constexpr std::int64_t kCrossingsStepCap = 1'000'000;
+constexpr std::int64_t kDefaultCrossings = 1000;
+
+struct SectionSpan {
+  RunSettings run;
+  bool capped = false;  ///< no t_end: the run goes on until the crossings or the step cap
+};
+
+/// The run of each orbit: to t_end as `simulate` resolves it; with --crossings and no t_end
+/// anywhere, forward until the crossings, at most max_steps steps (kCrossingsStepCap unless
+/// [integrate] max_steps): a fixed-step run is given twice that span, an adaptive one a span of
+/// 10^12 whose step-underflow floor stays that of a run of span 1 (10^-12 of the time unit).
+SectionSpan section_span(const io::Scenario& sc, const SectionArgs& a) {
+  if (!a.crossings || a.integration.t_end || sc.integrate.t_end) {
+    return {resolve_run(sc, a.integration), false};
+  }
+  constexpr double kAdaptiveSpan = 1e12;
+  SectionSpan s;
+  s.capped = true;
+  RunSettings& r = s.run;
+  r.method = io::resolve_method(sc, a.integration.overrides());
+  r.t0 = sc.integrate.t0;
+  r.options.max_steps = sc.integrate.max_steps.value_or(kCrossingsStepCap);
+  if (method_info(r.method.name).kind == MethodKind::adaptive) {
+    r.t_end = r.t0 + kAdaptiveSpan;
+    r.options.min_step_factor /= kAdaptiveSpan;
+  } else {
+    r.t_end = r.t0 + 2.0 * static_cast<double>(r.options.max_steps) * r.method.step;
+  }
+  check_time_span(r.t0, r.t_end);
+  return s;
+}
+
+/// The seeded orbits: how many, and why fewer than asked.
+void print_seeded(std::ostream& os, const phase::Levels& levels, std::size_t seeded, int asked) {
+  os << "orbits " << seeded << " seeded of " << asked << " asked";
+  if (static_cast<int>(seeded) < asked) {
+    os << ": at the other " << asked - static_cast<int>(seeded)
+       << " seed points the level energy = " << format_number(levels.energy)
+       << ", area = " << format_number(levels.area)
+       << " does not meet the surface (the kinetic energy would be negative there)";
+  }
+  os << '\n';
+}
+
+/// The step cap of a run without t_end, and whether it was hit.
+void print_cap(std::ostream& os, std::int64_t max_steps, std::int64_t crossings, int capped) {
+  os << "no t_end: each orbit runs until " << crossings << " crossings, at most " << max_steps
+     << " steps (the cap; [integrate] max_steps sets another)";
+  if (capped > 0) os << "; the cap was hit on " << capped << " orbit(s) before their crossings";
+  os << '\n';
+}
+
 int run(const SectionArgs& a) {
   // Every argument is checked before any work.
   const phase::Surface surface = phase::parse_surface(a.surface);
   const phase::Direction direction = phase::parse_direction(a.direction);
-  if (a.crossings < 1) {
-    throw InputError("--crossings: expected an integer >= 1, found " + std::to_string(a.crossings));
-  }
   if (io::is_orbit_scenario(a.scenario)) {
     if (a.orbits) {
       throw InputError(
@@ -87,11 +140,12 @@ int run(const SectionArgs& a) {
     }
     return orbit_section_command({a.scenario, a.surface, a.direction, a.integration.t_end,
                                   a.integration.step, a.integration.tol, a.integration.method,
-                                  a.out, a.crossings, a.json});
+                                  a.out, a.crossings.value_or(kDefaultCrossings), a.json});
   }
   phase::require_body_surface(surface);
   const io::Scenario sc = load_body_scenario(a.scenario);
-  const RunSettings run = resolve_run(sc, a.integration);
+  const SectionSpan span = section_span(sc, a);
+  const RunSettings& run = span.run;
   std::optional<phase::Levels> levels;
   std::vector<State> starts{sc.initial};
   if (a.orbits) {
@@ -103,10 +157,12 @@ int run(const SectionArgs& a) {
   if (a.out) file = std::make_unique<io::AtomicFile>(*a.out, sc.input_files);
 
   const InterruptGuard guard;
-  phase::SectionSettings settings{direction, a.crossings, a.orbits.has_value()};
+  phase::SectionSettings settings{direction, a.crossings.value_or(kDefaultCrossings),
+                                  a.orbits.has_value()};
   std::vector<phase::Crossing> crossings;
   phase::IntegralsDrift drift;
   bool all_by_crossings = true;
+  int capped = 0;  // orbits stopped by the cap of a run without t_end
   Status status = Status::finished;
   double residual = 0.0, relative = 0.0;
   try {
@@ -118,6 +174,7 @@ int run(const SectionArgs& a) {
           run.options, crossings, orbit_drift, throw_if_interrupted);
       drift.merge(orbit_drift);
       all_by_crossings = all_by_crossings && r.by_crossings;
+      if (span.capped && !r.by_crossings) ++capped;
       if (r.outcome.status != Status::finished) status = r.outcome.status;
       residual = std::max(residual, r.max_residual);
       relative = std::max(relative, r.max_relative);
@@ -135,11 +192,13 @@ int run(const SectionArgs& a) {
   }
   const bool empty = starts.empty();
   if (empty) {
-    std::cerr << "newtop: warning: the level energy = " << format_number(levels->energy)
-              << ", area = " << format_number(levels->area) << " does not meet the surface '"
-              << surface.text << "': no orbit\n";
+    warn("the level energy = " + format_number(levels->energy) +
+         ", area = " + format_number(levels->area) + " does not meet the surface '" + surface.text +
+         "': no orbit");
   }
-  const std::string stopped_by = all_by_crossings && !empty ? "crossings" : "t_end";
+  const std::string stopped_by = all_by_crossings && !empty ? "crossings"
+                                 : capped > 0               ? "cap"
+                                                            : "t_end";
   if (a.json) {
     io::Json j;
     j["surface"] = surface.text;
@@ -164,7 +223,12 @@ int run(const SectionArgs& a) {
       j["levels"] = {{"energy", levels->energy},
                      {"area", levels->area},
                      {"orbits", starts.size()},
+                     {"orbits_asked", *a.orbits},
                      {"empty", empty}};
+    }
+    if (span.capped) {
+      j["cap"] = {
+          {"max_steps", run.options.max_steps}, {"hit", capped > 0}, {"orbits_capped", capped}};
     }
     print_json(std::cout, j);
   } else {
@@ -174,6 +238,8 @@ int run(const SectionArgs& a) {
               << "\nmax |g| at the crossings = " << format_number(residual) << " ("
               << format_number(relative) << " of the size of its terms)\nmethod " << run.method.name
               << ", outcome " << to_string(status) << '\n';
+    if (levels) print_seeded(std::cout, *levels, starts.size(), *a.orbits);
+    if (span.capped) print_cap(std::cout, run.options.max_steps, settings.max_crossings, capped);
     if (a.out) std::cout << "crossings written to " << *a.out << '\n';
   }
   return status == Status::finished ? kExitOk : kExitIncomplete;
@@ -192,7 +258,8 @@ const RegisterCommand reg{Command{
           ->required();
       sub.add_option("--direction", a->direction, "up (default), down or both");
       sub.add_option("--crossings", a->crossings,
-                     "stop after N crossings per orbit (default 1000)");
+                     "stop after N crossings per orbit (default 1000); without a t_end, run "
+                     "until them (at most 10^6 steps per orbit, docs/section.md)");
       auto* orbits = sub.add_option("--orbits", a->orbits,
                                     "phase portrait: K orbits seeded on the surface, on the "
                                     "scenario's energy and area levels (docs/section.md; body "

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 
+#include "cli.hpp"
 #include "command.hpp"
 #include "integration_options.hpp"
 #include "interrupt.hpp"
@@ -210,7 +211,7 @@ int run_in(const SimulateArgs& a, const io::Scenario& sc) {
       sc,           plan.method, out, drift.initial, integrals(model, out.state), drift.max_drift,
       plan.out_path};
   rep.casimir = casimir_check(drift.initial, drift.max_drift, drift.max_m);
-  if (rep.casimir.exceeded()) std::cerr << "newtop: warning: " << rep.casimir.warning() << '\n';
+  if (rep.casimir.exceeded()) warn(rep.casimir.warning());
   print_report(a, sc, rep, q);
   return out.status == Status::finished ? kExitOk : kExitIncomplete;
 }
@@ -249,8 +250,7 @@ const RegisterCommand reg{Command{
       dt->excludes(times);
       sub.add_option("--euler", a->euler,
                      "with an attitude: add the Euler angles 321 (psi, theta, phi) or 313 (phi, "
-                     "theta, psi) to the CSV")
-          ->check(CLI::IsMember({321, 313}));
+                     "theta, psi) to the CSV (321 or 313)");
       sub.add_flag("--json", a->json, "print one JSON object instead of the summary");
       return [a] { return run(*a); };
     }}};

@@ -32,8 +32,31 @@ void clear_negative_zeros(io::Json& j) {
 
 }  // namespace
 
+namespace {
+std::string& units_text() {
+  static std::string u = kUnitFree;
+  return u;
+}
+bool& units_printed() {
+  static bool printed = false;
+  return printed;
+}
+}  // namespace
+
+const std::string& units() { return units_text(); }
+void set_units(std::string text) {
+  units_text() = std::move(text);
+  units_printed() = false;
+}
+void print_units_line(std::ostream& os) {
+  os << "units: " << units() << '\n';
+  units_printed() = true;
+}
+bool units_line_printed() { return units_printed(); }
+
 void print_json(std::ostream& os, io::Json j) {
   clear_negative_zeros(j);
+  if (j.is_object() && !j.contains("units")) j["units"] = units();
   os << j.dump(2) << '\n';
 }
 

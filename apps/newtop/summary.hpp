@@ -40,8 +40,24 @@ struct SimulationReport {
 io::Json simulation_json(const SimulationReport& r);
 void print_simulation_summary(std::ostream& os, const SimulationReport& r);
 
+/// The units of the numbers a report gives. newtop is unit-free: by default they are "those of the
+/// scenario (newtop is unit-free)". Every JSON object print_json writes carries them as "units"
+/// (unless the command set its own "units"), and every human summary ends with the line
+/// "units: " + units() (printed by run_newtop after a command that wrote a summary). A command
+/// that knows more (an orbit scenario's μ and R) says so with set_units before it reports.
+const std::string& units();
+void set_units(std::string text);
+/// The default: "those of the scenario (newtop is unit-free)".
+inline constexpr const char* kUnitFree = "those of the scenario (newtop is unit-free)";
+/// Writes the line "units: " + units() now, where a summary wants it before the end (a table
+/// follows); run_newtop then does not repeat it.
+void print_units_line(std::ostream& os);
+/// Whether print_units_line has written the line in this run (set_units resets it).
+bool units_line_printed();
+
 /// Writes j indented by 2, one object per run, with −0 written as 0 (nlohmann-json writes −0.0;
-/// the sign of a zero is never information in newtop's results).
+/// the sign of a zero is never information in newtop's results), and "units" (units()) added to
+/// an object that has none.
 void print_json(std::ostream& os, io::Json j);
 
 /// j with every −0 replaced by 0 (for summaries that print parts of a JSON object).

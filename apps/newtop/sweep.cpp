@@ -28,7 +28,7 @@ struct SweepArgs {
   std::string sweep;
   std::optional<int> threads;
   std::optional<std::string> out;
-  bool resume = false, quiet = false, json = false;
+  bool resume = false, json = false;
 };
 
 /// A cell: empty for a failed point or an inconclusive verdict (never a number for them).
@@ -145,8 +145,13 @@ int run_rank(const SweepArgs& a, const MpiSession& mpi) {
     }
   }
   if (!mpi.confirm(error.empty())) throw InputError(error);
+  // Checked, then closed at once: a sweep killed while it runs (SIGKILL, or a rank lost under
+  // mpirun) leaves its checkpoint and no temporary beside it; the file is opened again, under a
+  // fresh temporary, only to write the results.
+  const bool write_out = file != nullptr;
+  file.reset();
   const InterruptGuard guard;
-  Progress progress(a.quiet);
+  Progress progress(quiet());
   sweep::RunOptions o;
   o.threads = a.threads.value_or(0);
   o.resume = a.resume;
@@ -175,13 +180,13 @@ int run_rank(const SweepArgs& a, const MpiSession& mpi) {
     off_level += r.status == "off_level";
     failed += r.status != "ok" && r.status != "off_level";
   }
-  if (file && hdf5) {
-    file.reset();  // the checked name; HDF5 writes its own temporary and renames it
-    write_hdf5(*a.out, s, run);
+  if (write_out && hdf5) {
+    write_hdf5(*a.out, s, run);  // HDF5 writes its own temporary and renames it
     std::remove(o.checkpoint.c_str());
-  } else if (file) {
-    write_csv(file->stream(), s, run);
-    file->commit();
+  } else if (write_out) {
+    io::AtomicFile out(*a.out, s.input_files);
+    write_csv(out.stream(), s, run);
+    out.commit();
     std::remove(o.checkpoint.c_str());
   }
   if (a.json) {
@@ -209,7 +214,10 @@ int run_rank(const SweepArgs& a, const MpiSession& mpi) {
   if (off_level) std::cout << ", " << off_level << " off the energy level";
   std::cout << "\n";
   if (a.out) std::cout << "results: " << *a.out << "\n";
-  if (!a.out) write_csv(std::cout, s, run);
+  if (!a.out) {
+    print_units_line(std::cout);  // before the table, so that the table ends the output
+    write_csv(std::cout, s, run);
+  }
   return kExitOk;
 }
 
@@ -241,7 +249,6 @@ const RegisterCommand reg{Command{
       sub.add_option("--threads", a->threads, "threads (default: all cores)");
       sub.add_option("--out", a->out, "write the results to this CSV or HDF5 (.h5) file");
       sub.add_flag("--resume", a->resume, "complete an interrupted sweep from OUT.checkpoint");
-      sub.add_flag("--quiet", a->quiet, "no progress on stderr");
       sub.add_flag("--json", a->json, "print one JSON object (with every column)");
       return [a] { return run(*a); };
     }}};

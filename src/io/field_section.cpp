@@ -19,7 +19,9 @@ Factor factor(const std::string& key, double value, int power = 1) {
 // to no common form.
 const char* const kForms = "give (g, lambda), (g, R) or (mu, R)";
 
-FieldSection quadratic_form(TableReader& r, const std::string& kind) {
+// g_irrelevant: the body's centre of mass is at the fixed point (r0 = 0), so that g, which only
+// multiplies r0 in the potential, cannot matter: lambda alone is the field, with g = 0.
+FieldSection quadratic_form(TableReader& r, const std::string& kind, bool g_irrelevant) {
   const bool g = r.has("g"), lam = r.has("lambda"), mu = r.has("mu"), R = r.has("R");
   const std::pair<const char*, const char*> clashes[] = {
       {"lambda", "R"}, {"lambda", "mu"}, {"g", "mu"}};
@@ -42,10 +44,14 @@ FieldSection quadratic_form(TableReader& r, const std::string& kind) {
     f.field = r.checked([&] { return QuadraticField::from_mu_R(vmu, vR); });
     f.g = {factor("mu", vmu), factor("R", vR, -2)};
     f.lambda = {factor("mu", vmu), factor("R", vR, -3)};
+  } else if (lam && g_irrelevant) {
+    const double vl = r.number("lambda");
+    f.field = r.checked([&] { return QuadraticField::coulomb(0.0, vl); });
+    f.lambda = {factor("lambda", vl)};
   } else if (g) {
     r.fail("lambda", "missing: g needs lambda or R (or kind = \"uniform\" for uniform gravity)");
   } else if (lam) {
-    r.fail("g", "missing: lambda needs g");
+    r.fail("g", "missing: lambda needs g (where the centre of mass r0 is not 0)");
   } else if (mu) {
     r.fail("R", "missing: mu needs R");
   } else if (R) {
@@ -96,7 +102,7 @@ const std::vector<std::string>& field_keys() {
 }
 
 FieldSection read_field(TableReader& r, const std::shared_ptr<const MassModel>& mass_model,
-                        CentreSection& exact) {
+                        CentreSection& exact, bool g_irrelevant) {
   const std::optional<std::string> given = r.optional_string("kind");
   const std::vector<std::string> kinds{"newtonian", "coulomb", "uniform",
                                        "brun",      "exact",   "multipole"};
@@ -137,7 +143,7 @@ FieldSection read_field(TableReader& r, const std::shared_ptr<const MassModel>& 
     f.g = {factor("g", g)};
   } else {  // newtonian, coulomb or no kind: the forms (g, lambda), (g, R), (mu, R)
     r.only(quadratic, field_keys(), given ? reason : "the quadratic field's keys");
-    f = quadratic_form(r, kind);
+    f = quadratic_form(r, kind, g_irrelevant);
   }
   r.finish();
   return f;

@@ -224,7 +224,8 @@ Scenario parse_scenario(const std::string& text, const std::string& source) {
   const Body body_value = read_body_or_mass_model(body_table, mm_table, mm, source);
   TableReader field_reader(*section("field", true), source, "field");
   CentreSection centre;
-  const FieldSection field = read_field(field_reader, mm.model, centre);
+  const FieldSection field =
+      read_field(field_reader, mm.model, centre, body_value.center_of_mass().isZero(0.0));
   const QuadraticModel checked{body_value, field.field};
   TableReader initial(*section("initial", true), source, "initial");
   std::optional<Quaternion> attitude;

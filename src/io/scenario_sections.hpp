@@ -41,8 +41,9 @@ struct CentreSection {
 /// Reads [field] (kind optional where the keys say which field it is); fills `centre` for
 /// kind = "exact" | "multipole", which need a mass model (`mass_model`, null without one).
 /// `field` is then the quadratic field of the same μ and R (for the magnitude checks).
+/// g_irrelevant (the body's r0 = 0): lambda without g is the field g = 0, lambda.
 FieldSection read_field(TableReader& r, const std::shared_ptr<const MassModel>& mass_model,
-                        CentreSection& centre);
+                        CentreSection& centre, bool g_irrelevant);
 
 /// A quaternion or rotation matrix given for the attitude must be a unit quaternion (|‖q‖ − 1|)
 /// or orthonormal (max |RᵀR − I|) to this tolerance; it is then normalised (docs/scenario.md).

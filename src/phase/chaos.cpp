@@ -37,7 +37,9 @@ void ChaosIndicators::operator()(double t, Tangent& V) {
   }
   log_norm_ += delta;
   fli_ = std::max(fli_, log_norm_);
-  const double s0 = t_prev_ - t0_, s1 = t - t0_;
+  // s is the time elapsed along the run, |t − t0|: a backward run gives the indicators of the
+  // backward flow.
+  const double s0 = std::abs(t_prev_ - t0_), s1 = std::abs(t - t0_);
   s_ += 0.5 * (s0 + s1) * delta;  // ∫ s d ln|δ| over the step, s at the step's middle
   const double y = s1 > 0 ? 2 * s_ / s1 : 0.0;
   mean_integral_ += 0.5 * (y_prev_ + y) * (s1 - s0);
@@ -48,8 +50,8 @@ void ChaosIndicators::operator()(double t, Tangent& V) {
 ChaosSample ChaosIndicators::sample() const {
   ChaosSample c;
   c.t = t_prev_;
-  const double s = t_prev_ - t0_;
-  if (s <= 0) return c;
+  const double s = std::abs(t_prev_ - t0_);
+  if (!(s > 0)) return c;
   c.lyapunov_max = log_norm_ / s;
   c.megno_y = y_prev_;
   c.megno = mean_integral_ / s;

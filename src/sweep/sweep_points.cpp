@@ -261,6 +261,11 @@ void check_points(SweepFile& s) {
         io::resolve_method(sc, s.integrate);
         const double t1 = io::resolve_t_end(sc, s.integrate);
         check_time_span(sc.integrate.t0, t1);
+        if (t1 == sc.integrate.t0) {  // no run: its drift and indicators would be zeros
+          throw InputError(
+              "t_end: expected a time different from t0 = " + format_number(sc.integrate.t0) +
+              ", found " + format_number(t1) + " (a run of no length)");
+        }
       }
     } catch (const InputError& e) {
       throw InputError(s.source + ": " + point_label(s, i) + ": " + e.what());

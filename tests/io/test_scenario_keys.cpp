@@ -53,6 +53,23 @@ TEST(ScenarioKeys, NewtonianFieldRefusesNegativeGAndLambda) {
       parse_scenario(with_field("kind = \"coulomb\"\ng = -1\nlambda = -3\n"), "s.toml"));
 }
 
+// g multiplies r0 only (V = M g r0·γ + ½ λ γ·Iγ): with r0 = 0 it cannot matter, and lambda alone
+// is the field with g = 0, the same model as g = 0 written out; with r0 ≠ 0 g is still required.
+TEST(ScenarioKeys, LambdaAloneWhereGCannotMatter) {
+  const std::string body0 =
+      "[body]\ninertia = [1.0, 1.5, 2.2]\nmass = 1.0\ncenter_of_mass = [0.0, 0.0, 0.0]\n";
+  const Scenario alone = parse_scenario(body0 + "[field]\nlambda = 3\n" + kInitial, "s.toml");
+  const Scenario written =
+      parse_scenario(body0 + "[field]\ng = 0\nlambda = 3\n" + kInitial, "s.toml");
+  EXPECT_EQ(alone.model.quadratic().field.g, 0.0);
+  EXPECT_EQ(alone.model.quadratic().field.lambda_, 3.0);
+  EXPECT_EQ(alone.model.quadratic().field.g, written.model.quadratic().field.g);
+  EXPECT_EQ(alone.model.quadratic().field.lambda_, written.model.quadratic().field.lambda_);
+  expect_rejected("lambda_without_g", with_field("lambda = 3\n"),
+                  ":5:1: [field] g: missing: lambda needs g (where the centre of mass r0 is not "
+                  "0)");
+}
+
 TEST(ScenarioKeys, StepAndTolTogether) {
   expect_rejected("step_tol", with_field("g = 1\nlambda = 3\n") + "tol = 1e-9\n",
                   ":14:7: [integrate] tol: conflicts with step: give step (fixed-step methods) or "

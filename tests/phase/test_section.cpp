@@ -160,5 +160,48 @@ TEST(Section, StopsAtTheCrossingCountOrAtTEnd) {
   EXPECT_EQ(all.run.outcome.t, 30.0);
 }
 
+// A section of the flow run backwards: the crossings of a backward run from x0 over [−T, 0] are
+// those of the forward run from its end state x(−T) over the same span, in reverse order. With a
+// symmetric splitting method a step of −h is the inverse of a step of h, so both runs visit the
+// same grid points to round-off (64 ε √N over N = 2000 steps, ~6e-13 on |m|, |γ| ~ 1); each
+// crossing is located in the same grid interval by the one-step maps from its two ends, which
+// differ by the method's local error, C h^7 ~ 1e-12 at h = 0.02 with the model's derivatives of
+// order one. 1e-9 bounds both with margin; a locator that dropped or misplaced a crossing (a
+// bracket on the wrong side of the step, the direction taken along the run instead of in time)
+// misses it by O(h) ~ 1e-2.
+TEST(Section, BackwardRunGivesTheForwardCrossingsReversed) {
+  constexpr double kSame = 1e-9;
+  const QuadraticModel model = test::generic_model();
+  const State x0 = test::generic_state(model);
+  const phase::SurfaceFunction g(phase::parse_surface("gamma3 = 0"), model.body);
+  auto rate = [&](const State& x) {
+    const State d = rhs(model, x);
+    return g.b_m.dot(d.m) + g.b_gamma.dot(d.gamma);
+  };
+  const MethodSettings m = fixed("splitting6", 0.02);
+  constexpr double kT = 40.0;
+  const SectionResult back = section(model, x0, "gamma3 = 0", m, -kT, Direction::up);
+  ASSERT_EQ(back.run.outcome.status, Status::finished);
+  ASSERT_EQ(back.run.outcome.t, -kT);
+  ASSERT_GE(back.crossings.size(), 3u);
+  for (const Crossing& c : back.crossings) {
+    EXPECT_GT(rate(c.x), 0.0);  // up: g increases with time, whichever way the run goes
+    EXPECT_LT(c.t, 0.0);
+  }
+  std::vector<Crossing> fwd;
+  phase::IntegralsDrift drift;
+  const phase::SectionSettings settings{Direction::up, 1000, false};
+  phase::section_orbit(m, model, g, settings, 0, back.run.outcome.state, -kT, 0.0,
+                       IntegrateOptions{}, fwd, drift);
+  ASSERT_EQ(fwd.size(), back.crossings.size());
+  for (std::size_t i = 0; i < fwd.size(); ++i) {
+    const Crossing& b = back.crossings[back.crossings.size() - 1 - i];
+    ASSERT_TRUE(std::isfinite(b.t) && b.x.m.allFinite() && b.x.gamma.allFinite());
+    EXPECT_NEAR(fwd[i].t, b.t, kSame) << "crossing " << i;
+    EXPECT_LE((fwd[i].x.m - b.x.m).norm(), kSame) << "crossing " << i;
+    EXPECT_LE((fwd[i].x.gamma - b.x.gamma).norm(), kSame) << "crossing " << i;
+  }
+}
+
 }  // namespace
 }  // namespace newtop

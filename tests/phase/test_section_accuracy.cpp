@@ -181,14 +181,18 @@ TEST(SectionAccuracy, SeededOrbitStartsWithItsSeed) {
   ASSERT_EQ(seeds.size(), 3u);
   for (State s : seeds) {
     // On the surface to round-off but on its negative side: the sign change of the first step
-    // is the seed itself, not a new crossing.
+    // is the seed itself, not a new crossing; so too on a backward run, whose first step ends
+    // (in time) at the seed.
     s.gamma[2] = std::nextafter(0.2, 0.0);
-    const auto cs =
-        crossings(qm, s, "gamma3 = 0.2", fixed("splitting6", 0.02), 100.0, Direction::up, true);
-    ASSERT_GE(cs.size(), 2u);
-    EXPECT_EQ(cs[0].t, 0.0);
-    EXPECT_EQ(cs[0].x, s);
-    EXPECT_GT(cs[1].t, 0.5);
+    for (const double t_end : {100.0, -100.0}) {
+      const auto cs =
+          crossings(qm, s, "gamma3 = 0.2", fixed("splitting6", 0.02), t_end, Direction::up, true);
+      ASSERT_GE(cs.size(), 2u);
+      EXPECT_EQ(cs[0].t, 0.0);
+      EXPECT_EQ(cs[0].x, s);
+      EXPECT_GT(std::abs(cs[1].t), 0.5) << t_end;
+      EXPECT_EQ(cs[1].t > 0, t_end > 0);
+    }
   }
 }
 

@@ -20,7 +20,8 @@
 
 namespace newtop::phase {
 
-/// The indicators at a time (the history of a run).
+/// The indicators at a time (the history of a run). On a backward run (t < t0) every t − t0 below
+/// reads |t − t0|, the time elapsed along the run: they are the indicators of the backward flow.
 struct ChaosSample {
   double t = 0;
   double lyapunov_max = 0;  ///< ln|δ(t)|/(t − t0), δ the first tangent vector, |δ(t0)| = 1

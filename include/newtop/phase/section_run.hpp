@@ -40,6 +40,7 @@ struct SectionObserver {
   SectionRun& run;
   std::int64_t found = 0;
   bool first = true;
+  bool on_surface = false;  ///< the previous point is a seed on the surface
   double t_prev = 0, g_prev = 0;
   X x_prev;
 
@@ -75,11 +76,21 @@ struct SectionObserver {
       g_prev = gx;
       if (settings.start_on_surface) {
         g_prev = 0.0;  // on the surface: the next sign change is the next crossing
+        on_surface = true;
         record(t, x);
       }
       return;
     }
-    if (kept(g_prev, gx)) locate(t, x);
+    if (on_surface) {  // the first step leaves the seed's crossing (backward: 0 ends that step)
+      on_surface = false;
+      t_prev = t;
+      x_prev = x;
+      g_prev = gx;
+      return;
+    }
+    // The direction is that of g in time: on a backward run (t < t_prev) g goes from gx at the
+    // earlier time to g_prev at the later one.
+    if (t > t_prev ? kept(g_prev, gx) : kept(gx, g_prev)) locate(t, x);
     t_prev = t;
     x_prev = x;
     g_prev = gx;
@@ -95,7 +106,9 @@ struct SectionObserver {
     }
     std::uintmax_t iters = 100;
     const auto tol = boost::math::tools::eps_tolerance<double>(std::numeric_limits<double>::digits);
-    const auto r = boost::math::tools::toms748_solve(f, 0.0, h, g_prev, f_end, tol, iters);
+    // TOMS 748 takes its bracket in increasing order: [h, 0] on a backward run.
+    const auto r = h > 0 ? boost::math::tools::toms748_solve(f, 0.0, h, g_prev, f_end, tol, iters)
+                         : boost::math::tools::toms748_solve(f, h, 0.0, f_end, g_prev, tol, iters);
     const X a = map(t_prev, x_prev, r.first), b = map(t_prev, x_prev, r.second);
     if (std::abs(g(a)) <= std::abs(g(b))) {
       record(t_prev + r.first, a);
