@@ -18,6 +18,9 @@
 
 #include "newtop/integrate/ensemble.hpp"
 #include "newtop/newtop.hpp"
+#include "newtop/integrate/methods.hpp"
+#include "newtop/phase/chaos_run.hpp"
+#include "newtop/phase/section_run.hpp"
 #include "newtop/phase/ensemble_tangent.hpp"
 #include "wp_support.hpp"
 

@@ -14,6 +14,9 @@
 #include <string>
 
 #include "newtop/newtop.hpp"
+#include "newtop/integrate/methods.hpp"
+#include "newtop/phase/chaos_run.hpp"
+#include "newtop/phase/section_run.hpp"
 #include "wp_support.hpp"
 
 namespace {

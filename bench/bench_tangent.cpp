@@ -8,6 +8,9 @@
 #include <memory>
 
 #include "newtop/newtop.hpp"
+#include "newtop/integrate/methods.hpp"
+#include "newtop/phase/chaos_run.hpp"
+#include "newtop/phase/section_run.hpp"
 #include "newtop/phase/chaos_run.hpp"
 
 namespace {

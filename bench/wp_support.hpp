@@ -10,6 +10,9 @@
 #include <string>
 
 #include "newtop/newtop.hpp"
+#include "newtop/integrate/methods.hpp"
+#include "newtop/phase/chaos_run.hpp"
+#include "newtop/phase/section_run.hpp"
 
 namespace wp {
 

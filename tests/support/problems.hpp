@@ -6,6 +6,9 @@
 #include <random>
 
 #include "newtop/newtop.hpp"
+#include "newtop/integrate/methods.hpp"
+#include "newtop/phase/chaos_run.hpp"
+#include "newtop/phase/section_run.hpp"
 
 namespace newtop::test {
 
