@@ -46,10 +46,10 @@ std::optional<int> spin_axis_of(const QuadraticModel& model, const State& s) {
   return std::nullopt;
 }
 
-StabilityReport stability_report(const Model& model, const PolishedFixedPoint& polish,
-                                 std::optional<int> axis) {
+StabilityReport stability_report(const Model& model, const State& state,
+                                 const PolishedFixedPoint& polish, std::optional<int> axis) {
   StabilityReport r;
-  r.state = polish.state;
+  r.state = state;
   r.axis = axis;
   r.polish = polish;
   r.spectrum = linear_stability(model, r.state);
@@ -80,7 +80,7 @@ StabilityReport stability_of_axis(const Model& model, int axis, double Omega) {
                      ": expected a permanent rotation, found residual " + format_number(res) +
                      " of d(m, gamma)/dt (M g r0 is not along the axis)");
   }
-  return stability_report(model, polish_fixed_point(model, s), axis);
+  return stability_report(model, s, polish_fixed_point(model, s), axis);
 }
 
 StabilityReport stability_of_equilibrium(const Model& model, int k) {
@@ -119,7 +119,7 @@ StabilityReport stability_of_state(const Model& model, const State& s) {
   const std::optional<int> axis = model.kind() == FieldKind::quadratic
                                       ? spin_axis_of(model.quadratic(), p.state)
                                       : std::nullopt;
-  return stability_report(model, p, axis);
+  return stability_report(model, p.state, p, axis);
 }
 
 }  // namespace newtop

@@ -33,10 +33,11 @@ struct StabilityReport {
 /// fixed point for every Ω (M g r0 along e_i); nullopt otherwise.
 std::optional<int> spin_axis_of(const QuadraticModel& model, const State& s);
 
-/// The report of a fixed point `state` (checked by the caller), with `axis` when it is a spin
-/// about that principal axis (the thresholds need the quadratic field).
-StabilityReport stability_report(const Model& model, const PolishedFixedPoint& polish,
-                                 std::optional<int> axis);
+/// The report of a fixed point `state` (checked by the caller) with Newton's `polish` of the state
+/// given, and `axis` when it is a spin about that principal axis (the thresholds need the
+/// quadratic field).
+StabilityReport stability_report(const Model& model, const State& state,
+                                 const PolishedFixedPoint& polish, std::optional<int> axis);
 
 /// The spin about principal axis `axis` (0, 1, 2) at rate Ω, pointing at the centre. Throws
 /// InputError ("axis: ...") on a field other than the quadratic one or when M g r0 is not along
