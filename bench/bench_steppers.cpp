@@ -13,8 +13,8 @@
 #include <map>
 #include <string>
 
-#include "newtop/newtop.hpp"
 #include "newtop/integrate/methods.hpp"
+#include "newtop/newtop.hpp"
 #include "newtop/phase/chaos_run.hpp"
 #include "newtop/phase/section_run.hpp"
 #include "wp_support.hpp"

@@ -9,8 +9,8 @@
 #include <ctime>
 #include <string>
 
-#include "newtop/newtop.hpp"
 #include "newtop/integrate/methods.hpp"
+#include "newtop/newtop.hpp"
 #include "newtop/phase/chaos_run.hpp"
 #include "newtop/phase/section_run.hpp"
 

@@ -5,7 +5,6 @@
 #pragma GCC diagnostic ignored "-Wuninitialized"
 
 #include "newtop/analysis/analytic.hpp"
-#include "newtop/analysis/analytic_comparison.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +18,7 @@
 
 #include "analytic_brun.hpp"
 #include "command.hpp"
+#include "newtop/analysis/analytic_comparison.hpp"
 #include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"

@@ -75,12 +75,13 @@ StabilityReport chosen_report(const io::Scenario& sc, const StabilityArgs& a) {
   const State given = a.equilibrium ? listed_equilibrium(sc, *a.equilibrium) : sc.initial;
   const PolishedFixedPoint p = polish_fixed_point(sc.model, given);
   if (!p.converged) {
-    throw InputError((a.equilibrium ? "--equilibrium " + std::to_string(*a.equilibrium)
-                                    : sc.source + ": [initial]") +
-                     ": expected an equilibrium or a permanent rotation (to three digits or more), " +
-                     polish_failure(p) +
-                     "; see newtop equilibria (and --equilibrium K) / rotations, or use --axis and "
-                     "--omega");
+    throw InputError(
+        (a.equilibrium ? "--equilibrium " + std::to_string(*a.equilibrium)
+                       : sc.source + ": [initial]") +
+        ": expected an equilibrium or a permanent rotation (to three digits or more), " +
+        polish_failure(p) +
+        "; see newtop equilibria (and --equilibrium K) / rotations, or use --axis and "
+        "--omega");
   }
   // The spin families about principal axes (and their thresholds) are the quadratic field's.
   const std::optional<int> spin_axis = sc.model.kind() == FieldKind::quadratic
@@ -117,8 +118,7 @@ void print_report(std::ostream& os, const io::Json& j, const std::string& formul
   if (!j["axis"].is_null()) {
     os << "spin axis " << j["axis"].get<std::string>() << " (" << j["axis_class"].get<std::string>()
        << " moment); threshold Omega: formula "
-       << optional_text(j["threshold_omega_formula"], formula_note)
-       << ", numeric "
+       << optional_text(j["threshold_omega_formula"], formula_note) << ", numeric "
        << optional_text(j["threshold_omega_numeric"], "none (no unstable-to-stable change)")
        << "\n";
   }

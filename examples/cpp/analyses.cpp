@@ -40,8 +40,8 @@ int main() {
                            QuadraticField::uniform(9.81)};
   const State y0 = state_from_omega(top.body, Vec3(0.3, 0, 20), Vec3(0.6, 0, 0.8));
   const AnalyticDetection det = detect_analytic_case(top, y0);
-  const AnalyticComparison cmp = compare_analytic(top, y0, analytic_solution(top, y0, det.kind),
-                                                  {0.5, 1.0, 1.5, 2.0, 2.5});
+  const AnalyticComparison cmp =
+      compare_analytic(top, y0, analytic_solution(top, y0, det.kind), {0.5, 1.0, 1.5, 2.0, 2.5});
   std::printf("%s: max |analytic - numeric| = %.3g\n", to_string(det.kind).c_str(),
               cmp.max_abs_error.value_or(-1.0));
 

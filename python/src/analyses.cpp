@@ -39,7 +39,8 @@ py::array_t<double> table(const std::vector<Row>& rows, py::ssize_t k,
 }
 
 template <class Row>
-py::array_t<double> vectors(const std::vector<Row>& rows, const std::function<Vec3(const Row&)>& f) {
+py::array_t<double> vectors(const std::vector<Row>& rows,
+                            const std::function<Vec3(const Row&)>& f) {
   return table<Row>(rows, 3, [&](const Row& r, double* p) {
     const Vec3 v = f(r);
     p[0] = v[0], p[1] = v[1], p[2] = v[2];
@@ -47,7 +48,8 @@ py::array_t<double> vectors(const std::vector<Row>& rows, const std::function<Ve
 }
 
 template <class Row>
-py::array_t<double> scalars(const std::vector<Row>& rows, const std::function<double(const Row&)>& f) {
+py::array_t<double> scalars(const std::vector<Row>& rows,
+                            const std::function<double(const Row&)>& f) {
   py::array_t<double> a(static_cast<py::ssize_t>(rows.size()));
   double* p = a.mutable_data();
   for (const Row& r : rows) *p++ = f(r);
@@ -63,13 +65,22 @@ void bind_equilibria(py::module_& m) {
                              "result of newtop.equilibria(model), as `newtop equilibria --json`.")
       .def_property_readonly("count", [](const EquilibriumSet& s) { return s.equilibria.size(); })
       .def_property_readonly(
-          "gamma", [](const EquilibriumSet& s) { return vectors<E>(s.equilibria, [](const E& e) { return e.gamma; }); },
+          "gamma",
+          [](const EquilibriumSet& s) {
+            return vectors<E>(s.equilibria, [](const E& e) { return e.gamma; });
+          },
           "(K, 3): gamma of each equilibrium")
       .def_property_readonly(
-          "kappa", [](const EquilibriumSet& s) { return scalars<E>(s.equilibria, [](const E& e) { return e.kappa; }); },
+          "kappa",
+          [](const EquilibriumSet& s) {
+            return scalars<E>(s.equilibria, [](const E& e) { return e.kappa; });
+          },
           "(K,): kappa = gamma.dV/dgamma")
       .def_property_readonly(
-          "potential", [](const EquilibriumSet& s) { return scalars<E>(s.equilibria, [](const E& e) { return e.potential; }); },
+          "potential",
+          [](const EquilibriumSet& s) {
+            return scalars<E>(s.equilibria, [](const E& e) { return e.potential; });
+          },
           "(K,): V(gamma)")
       .def_property_readonly(
           "hessian_eigenvalues",
@@ -80,7 +91,10 @@ void bind_equilibria(py::module_& m) {
           },
           "(K, 2): eigenvalues of the Hessian of V on the sphere, ascending")
       .def_property_readonly(
-          "staude_residual", [](const EquilibriumSet& s) { return scalars<E>(s.equilibria, [](const E& e) { return e.staude_residual; }); },
+          "staude_residual",
+          [](const EquilibriumSet& s) {
+            return scalars<E>(s.equilibria, [](const E& e) { return e.staude_residual; });
+          },
           "(K,): gamma.(I gamma x r0) (the quadratic field; nan otherwise)")
       .def_property_readonly(
           "type",
@@ -112,8 +126,8 @@ void bind_equilibria(py::module_& m) {
       .def_property_readonly("count_rule_holds", &EquilibriumSet::count_rule_holds)
       .def("__len__", [](const EquilibriumSet& s) { return s.equilibria.size(); })
       .def("__repr__", [](const EquilibriumSet& s) {
-        return "Equilibria(count=" + std::to_string(s.equilibria.size()) + ", minima=" +
-               std::to_string(s.minima) + ", saddles=" + std::to_string(s.saddles) +
+        return "Equilibria(count=" + std::to_string(s.equilibria.size()) +
+               ", minima=" + std::to_string(s.minima) + ", saddles=" + std::to_string(s.saddles) +
                ", maxima=" + std::to_string(s.maxima) + ")";
       });
   m.def(
@@ -140,21 +154,22 @@ void bind_stability(py::module_& m) {
                 "Linear and energy-Casimir stability of one fixed point (docs/model.md §7-§9): "
                 "the result of newtop.stability(model, ...), as `newtop stability --json`.")
       .def_readonly("state", &R::state)
-      .def_property_readonly("eigenvalues",
-                             [](const R& r) {
-                               py::array_t<std::complex<double>> a(
-                                   static_cast<py::ssize_t>(r.spectrum.eigenvalues.size()));
-                               std::copy(r.spectrum.eigenvalues.begin(),
-                                         r.spectrum.eigenvalues.end(), a.mutable_data());
-                               return a;
-                             },
-                             "(4,) complex: the eigenvalues on the symplectic leaf, sorted")
+      .def_property_readonly(
+          "eigenvalues",
+          [](const R& r) {
+            py::array_t<std::complex<double>> a(
+                static_cast<py::ssize_t>(r.spectrum.eigenvalues.size()));
+            std::copy(r.spectrum.eigenvalues.begin(), r.spectrum.eigenvalues.end(),
+                      a.mutable_data());
+            return a;
+          },
+          "(4,) complex: the eigenvalues on the symplectic leaf, sorted")
       .def_property_readonly("max_real_part", [](const R& r) { return r.spectrum.max_real_part; })
       .def_property_readonly("linearly_stable",
                              [](const R& r) { return r.spectrum.linearly_stable; })
-      .def_property_readonly("lyapunov_stable",
-                             [](const R& r) { return r.spectrum.lyapunov_stable; },
-                             "True (energy-Casimir proves it), False (unstable), None")
+      .def_property_readonly(
+          "lyapunov_stable", [](const R& r) { return r.spectrum.lyapunov_stable; },
+          "True (energy-Casimir proves it), False (unstable), None")
       .def_readonly("threshold_omega_formula", &R::threshold_formula)
       .def_readonly("threshold_omega_numeric", &R::threshold_numeric)
       .def_readonly("formula_note", &R::formula_note,
@@ -228,8 +243,9 @@ void bind_chaos(py::module_& m) {
           },
           "(6,) in Benettin's column order, or None without spectrum=True")
       .def_property_readonly("t_end", [](const ChaosOut& c) { return c.result.outcome.t; })
-      .def_property_readonly("outcome",
-                             [](const ChaosOut& c) { return std::string(to_string(c.result.outcome.status)); })
+      .def_property_readonly(
+          "outcome",
+          [](const ChaosOut& c) { return std::string(to_string(c.result.outcome.status)); })
       .def_property_readonly("steps", [](const ChaosOut& c) { return c.result.outcome.steps; })
       .def_readonly("method", &ChaosOut::method)
       .def_property_readonly(
@@ -297,17 +313,28 @@ void bind_section(py::module_& m) {
                                for (const C& c : s.crossings) *p++ = c.orbit;
                                return a;
                              })
-      .def_property_readonly("t", [](const SectionOut& s) { return scalars<C>(s.crossings, [](const C& c) { return c.t; }); })
-      .def_property_readonly("m", [](const SectionOut& s) { return vectors<C>(s.crossings, [](const C& c) { return c.x.m; }); })
-      .def_property_readonly("gamma", [](const SectionOut& s) { return vectors<C>(s.crossings, [](const C& c) { return c.x.gamma; }); })
+      .def_property_readonly("t",
+                             [](const SectionOut& s) {
+                               return scalars<C>(s.crossings, [](const C& c) { return c.t; });
+                             })
+      .def_property_readonly("m",
+                             [](const SectionOut& s) {
+                               return vectors<C>(s.crossings, [](const C& c) { return c.x.m; });
+                             })
+      .def_property_readonly("gamma",
+                             [](const SectionOut& s) {
+                               return vectors<C>(s.crossings, [](const C& c) { return c.x.gamma; });
+                             })
       .def_property_readonly("omega",
                              [](const SectionOut& s) {
-                               return vectors<C>(s.crossings, [&](const C& c) { return omega(s.body, c.x); });
+                               return vectors<C>(s.crossings,
+                                                 [&](const C& c) { return omega(s.body, c.x); });
                              })
       .def_property_readonly("outcomes",
                              [](const SectionOut& s) {
                                std::vector<std::string> o;
-                               for (const auto& r : s.runs) o.emplace_back(to_string(r.outcome.status));
+                               for (const auto& r : s.runs)
+                                 o.emplace_back(to_string(r.outcome.status));
                                return o;
                              })
       .def_property_readonly("max_surface_residual", [](const SectionOut& s) {
@@ -325,7 +352,8 @@ void bind_section(py::module_& m) {
         phase::require_body_surface(sf, "surface");
         const phase::Direction dir = phase::parse_direction(direction, "direction");
         if (crossings < 1) {
-          throw InputError("crossings: expected an integer >= 1, found " + std::to_string(crossings));
+          throw InputError("crossings: expected an integer >= 1, found " +
+                           std::to_string(crossings));
         }
         const MethodSettings s = method_settings(model, method, step, tol);
         check_time_span(t0, t_end);
@@ -344,10 +372,9 @@ void bind_section(py::module_& m) {
         return out;
       },
       py::arg("model"), py::arg("states"), py::arg("t_end"), py::kw_only(),
-      py::arg("surface") = "gamma3 = 0", py::arg("crossings") = 1000,
-      py::arg("direction") = "up", py::arg("t0") = 0.0, py::arg("method") = py::none(),
-      py::arg("step") = py::none(), py::arg("tol") = py::none(),
-      py::arg("max_steps") = py::none());
+      py::arg("surface") = "gamma3 = 0", py::arg("crossings") = 1000, py::arg("direction") = "up",
+      py::arg("t0") = 0.0, py::arg("method") = py::none(), py::arg("step") = py::none(),
+      py::arg("tol") = py::none(), py::arg("max_steps") = py::none());
 }
 
 // ---- analytic -----------------------------------------------------------------------------
@@ -367,27 +394,58 @@ void bind_analytic(py::module_& m) {
       .def_property_readonly("case", [](const A& a) { return to_string(a.detection.kind); })
       .def_property_readonly("reason", [](const A& a) { return a.detection.reason; })
       .def_readonly("period", &A::period, "the period of the solution, or None")
-      .def_property_readonly("t", [](const A& a) { return py::array_t<double>(static_cast<py::ssize_t>(a.comparison.times.size()), a.comparison.times.data()); })
-      .def_property_readonly("omega", [](const A& a) { return vectors<State>(a.comparison.analytic, [&](const State& s) { return omega(a.body, s); }); }, "(N, 3): the closed form")
-      .def_property_readonly("gamma", [](const A& a) { return vectors<State>(a.comparison.analytic, [](const State& s) { return s.gamma; }); })
-      .def_property_readonly("m", [](const A& a) { return vectors<State>(a.comparison.analytic, [](const State& s) { return s.m; }); })
-      .def_property_readonly("numeric_omega", [](const A& a) {
-        const Vec3 nan = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
-        return vectors<std::optional<State>>(a.comparison.numeric, [&](const std::optional<State>& s) { return s ? omega(a.body, *s) : nan; });
-      }, "(N, 3): the reference (nan where it did not reach the time)")
-      .def_property_readonly("numeric_gamma", [](const A& a) {
-        const Vec3 nan = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
-        return vectors<std::optional<State>>(a.comparison.numeric, [&](const std::optional<State>& s) { return s ? s->gamma : nan; });
-      })
+      .def_property_readonly("t",
+                             [](const A& a) {
+                               return py::array_t<double>(
+                                   static_cast<py::ssize_t>(a.comparison.times.size()),
+                                   a.comparison.times.data());
+                             })
+      .def_property_readonly(
+          "omega",
+          [](const A& a) {
+            return vectors<State>(a.comparison.analytic,
+                                  [&](const State& s) { return omega(a.body, s); });
+          },
+          "(N, 3): the closed form")
+      .def_property_readonly("gamma",
+                             [](const A& a) {
+                               return vectors<State>(a.comparison.analytic,
+                                                     [](const State& s) { return s.gamma; });
+                             })
+      .def_property_readonly("m",
+                             [](const A& a) {
+                               return vectors<State>(a.comparison.analytic,
+                                                     [](const State& s) { return s.m; });
+                             })
+      .def_property_readonly(
+          "numeric_omega",
+          [](const A& a) {
+            const Vec3 nan = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+            return vectors<std::optional<State>>(
+                a.comparison.numeric,
+                [&](const std::optional<State>& s) { return s ? omega(a.body, *s) : nan; });
+          },
+          "(N, 3): the reference (nan where it did not reach the time)")
+      .def_property_readonly(
+          "numeric_gamma",
+          [](const A& a) {
+            const Vec3 nan = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+            return vectors<std::optional<State>>(
+                a.comparison.numeric,
+                [&](const std::optional<State>& s) { return s ? s->gamma : nan; });
+          })
       .def_property_readonly("max_abs_error", [](const A& a) { return a.comparison.max_abs_error; })
-      .def_property_readonly("reference_outcome", [](const A& a) { return std::string(to_string(a.comparison.reference.status)); });
+      .def_property_readonly("reference_outcome", [](const A& a) {
+        return std::string(to_string(a.comparison.reference.status));
+      });
   m.def(
       "_analytic",
       [](const Model& model, const State& state, std::vector<double> times,
          std::optional<std::int64_t> max_steps) {
         if (model.kind() != FieldKind::quadratic) {
-          throw InputError(std::string("model: the closed forms need the quadratic field, found the ") +
-                           to_string(model.kind()) + " field");
+          throw InputError(
+              std::string("model: the closed forms need the quadratic field, found the ") +
+              to_string(model.kind()) + " field");
         }
         validate(state);
         for (double t : times) {

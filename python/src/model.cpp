@@ -172,8 +172,8 @@ void bind_model_class(py::module_& m) {
 
 void bind_scenario(py::module_& m) {
   py::class_<io::Scenario>(m, "Scenario",
-                          "A scenario: a model, an initial state and the [integrate] settings "
-                          "(docs/scenario.md), read from a file or built and edited in code.")
+                           "A scenario: a model, an initial state and the [integrate] settings "
+                           "(docs/scenario.md), read from a file or built and edited in code.")
       .def(py::init([](const Model& model, const State& initial, double t0,
                        std::optional<double> t_end, std::optional<std::string> method,
                        std::optional<double> step, std::optional<double> tol,

@@ -41,8 +41,8 @@ FieldComparison in_input_frame(const FieldComparison& c, const Mat3& P) {
 FieldScan scan_field_R(const std::shared_ptr<const MassModel>& mass_model, const Body& body,
                        double mu, double R1, double R2, int n, const Vec3& gamma) {
   if (!(R1 > 0) || !(R2 > R1) || n < 2) {
-    throw InputError("R: expected R1:R2:N with 0 < R1 < R2 and N >= 2, found " +
-                     format_number(R1) + ":" + format_number(R2) + ":" + std::to_string(n));
+    throw InputError("R: expected R1:R2:N with 0 < R1 < R2 and N >= 2, found " + format_number(R1) +
+                     ":" + format_number(R2) + ":" + std::to_string(n));
   }
   FieldScan s;
   for (int i = 0; i < n; ++i) {

@@ -15,8 +15,8 @@ const char kAxisNames[] = "xyz";
 std::string formula_note(const QuadraticModel& m, int axis, bool no_offset) {
   const std::string name(1, kAxisNames[axis]);
   std::string why;
-  if (!no_offset) why = "M g r0 = " + format_number(m.body.mass() * m.field.g *
-                                                    m.body.center_of_mass().norm());
+  if (!no_offset)
+    why = "M g r0 = " + format_number(m.body.mass() * m.field.g * m.body.center_of_mass().norm());
   const AxisClass c = axis_class(m.body, axis);
   if (c != AxisClass::largest) {
     if (!why.empty()) why += ", ";
@@ -94,8 +94,8 @@ StabilityReport stability_of_equilibrium(const Model& model, int k) {
     throw InputError("equilibrium: expected 1 to " + std::to_string(count) +
                      " (the equilibria of find_equilibria), found " + std::to_string(k));
   }
-  return stability_of_state(model,
-                            state_from_omega(model.body(), Vec3::Zero(), set.equilibria[k - 1].gamma));
+  return stability_of_state(
+      model, state_from_omega(model.body(), Vec3::Zero(), set.equilibria[k - 1].gamma));
 }
 
 std::string polish_failure(const PolishedFixedPoint& p) {

@@ -1,6 +1,7 @@
 // The chaos indicators on a Model: the templates of chaos_run.hpp compiled once for every field.
 
 #include "newtop/phase/chaos_run.hpp"
+
 #include "newtop/model/state_checks.hpp"
 
 namespace newtop::phase {

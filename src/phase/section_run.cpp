@@ -1,6 +1,7 @@
 // One orbit's section on a Model: the template of section_run.hpp compiled once for every field.
 
 #include "newtop/phase/section_run.hpp"
+
 #include "newtop/model/state_checks.hpp"
 
 namespace newtop::phase {

@@ -44,8 +44,8 @@ bool readme_snippet() {
   SplittingStepper stepper(composition_table("splitting6"));
   const Outcome same =
       integrate(stepper, model.quadratic(), x0, 0.0, 10.0, IntegrateOptions{.step = 0.01});
-  return out.status == Status::finished && out.steps == same.steps &&
-         out.state.m == same.state.m && out.state.gamma == same.state.gamma;
+  return out.status == Status::finished && out.steps == same.steps && out.state.m == same.state.m &&
+         out.state.gamma == same.state.gamma;
 }
 
 /// newtop::newtop: the library refuses a state whose γ is not a unit vector.
@@ -102,7 +102,8 @@ int main() {
   ok = check(readme_snippet(), "newtop::newtop: README snippet, compiled = template") && ok;
   ok = check(refuses_non_unit_gamma(), "newtop::newtop: non-unit gamma refused") && ok;
   ok = check(NEWTOP_VERSION >= 100 && std::string(NEWTOP_VERSION_STRING).size() >= 5,
-             "newtop::newtop: NEWTOP_VERSION") && ok;
+             "newtop::newtop: NEWTOP_VERSION") &&
+       ok;
   ok = check(euler_poinsot_solution(), "newtop::newtop: Euler-Poinsot solution") && ok;
   ok = check(parse_scenario_text(), "newtop::io: scenario from TOML text") && ok;
   ok = check(vector_json(), "newtop::io: JSON") && ok;

@@ -21,8 +21,8 @@ Vec3 vec(const io::Json& v) { return {v[0].get<double>(), v[1].get<double>(), v[
 
 /// Point masses whose principal axes are turned away from the file's frame.
 fs::path tilted_scenario() {
-  const fs::path p = fs::temp_directory_path() /
-                     ("newtop_field_frames_" + std::to_string(::getpid()) + ".toml");
+  const fs::path p =
+      fs::temp_directory_path() / ("newtop_field_frames_" + std::to_string(::getpid()) + ".toml");
   std::ofstream(p) << "[mass_model]\nkind = \"points\"\n"
                       "points = [[1.0, 1.0, 0.5, 0.0], [2.0, -0.5, 0.3, 0.2], [1.5, 0.1, -0.7, "
                       "0.4], [0.5, 0.2, 0.1, -0.9]]\n"
@@ -61,8 +61,7 @@ TEST(FieldFrames, JsonHasTheInputFrameBesideThePrincipalAxes) {
   }
   // The moment L = γ × ∂V/∂γ holds in the input frame as in the principal axes.
   const Vec3 g = vec(in["gamma"]), dV = vec(in["exact"]["grad_gamma"]);
-  EXPECT_LT((g.cross(dV) - vec(in["exact"]["moment"])).norm(),
-            1e-12 * dV.norm());
+  EXPECT_LT((g.cross(dV) - vec(in["exact"]["moment"])).norm(), 1e-12 * dV.norm());
 }
 
 TEST(FieldFrames, SummaryNamesBothFrames) {

@@ -40,38 +40,43 @@ const std::string kTwice =
 TEST(StateChecks, RunMethodRefusesANonUnitGamma) {
   const State x{Vec3(0.1, 0.2, 0.3), 2 * Vec3(0, 0.6, 0.8)};
   EXPECT_EQ(refusal([&] { run_method({"splitting6", 0.01}, model(), x, 0, 1); }), kTwice);
-  EXPECT_EQ(refusal([&] { run_method({"dop853", 0.0, 1e-10, 1e-10}, model(), x, 0, 1); }),
-            kTwice);
+  EXPECT_EQ(refusal([&] { run_method({"dop853", 0.0, 1e-10, 1e-10}, model(), x, 0, 1); }), kTwice);
   EXPECT_EQ(refusal([&] {
               run_method_sampled({"splitting6", 0.01}, model(), x, 0, 1,
                                  OutputTimes::list({0.5}, 0, 1), {}, {});
             }),
             kTwice);
-  EXPECT_EQ(refusal([&] { run_method({"splitting6", 0.01}, model(), with_attitude(x, Quaternion::Identity()), 0, 1); }),
-            kTwice);
+  EXPECT_EQ(
+      refusal([&] {
+        run_method({"splitting6", 0.01}, model(), with_attitude(x, Quaternion::Identity()), 0, 1);
+      }),
+      kTwice);
 }
 
 TEST(StateChecks, ChaosAndSectionRefuseANonUnitGamma) {
   const State x{Vec3(0.1, 0.2, 0.3), Vec3(0, 0.6, 0.9)};  // |γ| = 1.0816…
-  const std::string chaos =
-      refusal([&] { phase::chaos_run({"splitting6", 0.01}, model(), x, 0, 1, {}, false); });
-  EXPECT_EQ(chaos.rfind("gamma: expected a unit vector (|gamma| = 1 to 1e-12), found |gamma| = 1.08",
-                        0),
-            0u)
+  const std::string chaos = refusal([&] {
+    phase::chaos_run({"splitting6", 0.01}, model(), x, 0, 1, {}, false);
+  });
+  EXPECT_EQ(
+      chaos.rfind("gamma: expected a unit vector (|gamma| = 1 to 1e-12), found |gamma| = 1.08", 0),
+      0u)
       << chaos;
   std::vector<phase::Crossing> out;
   phase::IntegralsDrift drift;
   const phase::SurfaceFunction g(phase::parse_surface("gamma3 = 0"), model().body());
-  EXPECT_EQ(refusal([&] {
-              phase::section_orbit({"splitting6", 0.01}, model(), g, {}, 0, x, 0, 1, {}, out,
-                                   drift);
-            }),
-            chaos);
+  EXPECT_EQ(
+      refusal([&] {
+        phase::section_orbit({"splitting6", 0.01}, model(), g, {}, 0, x, 0, 1, {}, out, drift);
+      }),
+      chaos);
 }
 
 TEST(StateChecks, NonFiniteNumbersAndZeroGammaAreRefused) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(refusal([&] { validate(State{Vec3(nan, 0, 0), Vec3::UnitZ()}); }),
+  EXPECT_EQ(refusal([&] {
+              validate(State{Vec3(nan, 0, 0), Vec3::UnitZ()});
+            }),
             "m: expected finite numbers, found [nan, 0, 0]");
   EXPECT_EQ(refusal([&] { check_unit_gamma(Vec3(0, std::numeric_limits<double>::infinity(), 0)); }),
             "gamma: expected finite numbers, found [0, inf, 0]");

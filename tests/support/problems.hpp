@@ -5,8 +5,8 @@
 #include <limits>
 #include <random>
 
-#include "newtop/newtop.hpp"
 #include "newtop/integrate/methods.hpp"
+#include "newtop/newtop.hpp"
 #include "newtop/phase/chaos_run.hpp"
 #include "newtop/phase/section_run.hpp"
 

@@ -23,13 +23,13 @@ inline constexpr double kAnalyticReferenceTol = 1e-13;
 std::optional<double> solution_period(const AnalyticSolution& sol);
 
 struct AnalyticComparison {
-  std::vector<double> times;               ///< the sample times, ascending
-  std::vector<State> analytic;             ///< the closed form at each time
+  std::vector<double> times;                  ///< the sample times, ascending
+  std::vector<State> analytic;                ///< the closed form at each time
   std::vector<std::optional<State>> numeric;  ///< the reference, where it reached the time
   /// max over compared samples of max(|Δω|∞, |Δγ|∞); nullopt when none was compared.
   std::optional<double> max_abs_error;
-  Outcome reference;           ///< the reference run (rkf78 at kAnalyticReferenceTol)
-  std::int64_t compared = 0;   ///< samples the reference reached
+  Outcome reference;          ///< the reference run (rkf78 at kAnalyticReferenceTol)
+  std::int64_t compared = 0;  ///< samples the reference reached
 };
 
 /// The solution `sol` of the model's motion from (0, x0) at the ascending times ≥ 0, against
