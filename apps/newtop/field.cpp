@@ -138,9 +138,11 @@ int run(const FieldArgs& a) {
   const double R = a.R.value_or(centre.R);
   const Body& body = sc.model.body();
   const Mat3& P = body.principal_axes();
-  const Vec3 gamma = P.transpose() * parse_gamma(a.gamma);  // user frame → principal axes
+  const Vec3 given = parse_gamma(a.gamma);
+  const Vec3 gamma = P.transpose() * given;  // user frame → principal axes
   const FieldComparison principal = compare_field(mass_model, body, mu, R, gamma);
-  const FieldComparison input = in_input_frame(principal, P);
+  FieldComparison input = in_input_frame(principal, P);
+  input.gamma = given;  // as given (normalised), not rotated there and back
   io::Json j;
   j["scenario"] = sc.source;
   j["gamma"] = io::to_json(gamma);

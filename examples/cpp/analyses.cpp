@@ -25,7 +25,7 @@ int main() {
   const MethodSettings method{"splitting6", 0.01};
   std::vector<phase::Crossing> crossings;
   phase::IntegralsDrift drift;
-  const phase::SurfaceFunction g(phase::parse_surface("gamma3 = 0"), model.body());
+  const phase::SurfaceFunction g(phase::parse_surface("gamma1 = 0"), model.body());
   const phase::SectionSettings settings{phase::Direction::up, 50, false};
   const phase::SectionRun sec =
       phase::section_orbit(method, model, g, settings, 0, x0, 0.0, 1e4, {}, crossings, drift);

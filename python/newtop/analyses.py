@@ -106,8 +106,10 @@ def section(model, states=None, t_end=None, *, surface="gamma3 = 0", crossings=1
     m, s = _model_state(model, None)
     if states is None:
         states = [s]
-    elif isinstance(states, _newtop.State) or np.ndim(states) == 1:
-        states = [_state(states)]
+    elif isinstance(states, _newtop.State) or (
+            not isinstance(states, _newtop.State) and len(states) == 6
+            and all(isinstance(v, (int, float, np.floating)) for v in states)):
+        states = [_state(states)]  # one state: a State or (m, gamma)
     else:
         states = [_state(x) for x in states]
     t_end, method, step, tol = _run_keys(model, t_end, method, step, tol)

@@ -91,8 +91,8 @@ def test_stability_of_an_axis_equals_the_program(tmp_path):
 
 def test_section_of_200_crossings_equals_the_program(tmp_path):
     model, x0 = body_field_state()
-    s = newtop.section(model, [x0], 1e4, surface="gamma3 = 0", crossings=200, step=0.01)
-    j = program_json("section", scenario_file(tmp_path), "--surface", "gamma3 = 0",
+    s = newtop.section(model, [x0], 1e4, surface="gamma1 = 0", crossings=200, step=0.01)
+    j = program_json("section", scenario_file(tmp_path), "--surface", "gamma1 = 0",
                      "--crossings", "200", "--t-end", "1e4", "--step", "0.01")
     assert s.count == j["count"] == 200
     assert s.t.shape == (200,) and s.gamma.shape == (200, 3)
