@@ -42,8 +42,8 @@ TEST(FieldFrames, JsonHasTheInputFrameBesideThePrincipalAxes) {
   fs::remove(sc);
   ASSERT_EQ(r.code, 0) << r.err;
   const io::Json j = io::Json::parse(r.out);
+  ASSERT_TRUE(j.contains("frame") && j.contains("input_frame")) << r.out;
   EXPECT_EQ(j["frame"], "principal");
-  ASSERT_TRUE(j.contains("input_frame"));
   const io::Json& in = j["input_frame"];
   EXPECT_EQ(in["frame"], "input");
   // γ in the input frame is the --gamma given (normalised).
