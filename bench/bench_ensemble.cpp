@@ -17,8 +17,11 @@
 #include <vector>
 
 #include "newtop/integrate/ensemble.hpp"
+#include "newtop/integrate/methods.hpp"
 #include "newtop/newtop.hpp"
+#include "newtop/phase/chaos_run.hpp"
 #include "newtop/phase/ensemble_tangent.hpp"
+#include "newtop/phase/section_run.hpp"
 #include "wp_support.hpp"
 
 namespace {

@@ -13,7 +13,10 @@
 #include <map>
 #include <string>
 
+#include "newtop/integrate/methods.hpp"
 #include "newtop/newtop.hpp"
+#include "newtop/phase/chaos_run.hpp"
+#include "newtop/phase/section_run.hpp"
 #include "wp_support.hpp"
 
 namespace {

@@ -7,8 +7,10 @@
 
 #include <memory>
 
+#include "newtop/integrate/methods.hpp"
 #include "newtop/newtop.hpp"
 #include "newtop/phase/chaos_run.hpp"
+#include "newtop/phase/section_run.hpp"
 
 namespace {
 

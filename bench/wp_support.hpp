@@ -9,7 +9,10 @@
 #include <ctime>
 #include <string>
 
+#include "newtop/integrate/methods.hpp"
 #include "newtop/newtop.hpp"
+#include "newtop/phase/chaos_run.hpp"
+#include "newtop/phase/section_run.hpp"
 
 namespace wp {
 

@@ -18,6 +18,7 @@
 
 #include "analytic_brun.hpp"
 #include "command.hpp"
+#include "newtop/analysis/analytic_comparison.hpp"
 #include "newtop/analysis/lagrange_attitude.hpp"
 #include "newtop/integrate/run.hpp"
 #include "newtop/io/json.hpp"
@@ -29,9 +30,7 @@
 namespace newtop::app {
 namespace {
 
-// Tolerance of the numerical reference: its global error (~1e-12 over a few periods) stays well
-// below the 1e-10 at which the analytic solutions are validated.
-constexpr double kReferenceTol = 1e-13;
+constexpr double kReferenceTol = kAnalyticReferenceTol;
 constexpr int kDefaultSamples = 20;
 
 struct AnalyticArgs {
@@ -41,26 +40,6 @@ struct AnalyticArgs {
   std::optional<std::string> times;
   bool json = false;
 };
-
-/// The period the solution repeats with (nutation period for the Lagrange case); nullopt when
-/// it has none (equilibrium, separatrix, steady precession, Brun's quasi-periodic motion on a
-/// two-torus).
-std::optional<double> solution_period(const AnalyticSolution& sol) {
-  const double T = std::visit(
-      [](const auto& s) -> double {
-        using S = std::decay_t<decltype(s)>;
-        if constexpr (std::is_same_v<S, LagrangeCase>) {
-          return s.nutation_period;
-        } else if constexpr (std::is_same_v<S, BrunCase>) {
-          return std::numeric_limits<double>::quiet_NaN();
-        } else {
-          return s.period;
-        }
-      },
-      sol);
-  if (std::isfinite(T) && T > 0) return T;
-  return std::nullopt;
-}
 
 /// The sample times and where their span came from: --times; or N + 1 equally spaced times in
 /// [0, T] with T from --t-end, [integrate] t_end or, without either, one period of the solution.
@@ -137,9 +116,8 @@ void add_case_details(io::Json& j, const AnalyticSolution& sol, const std::vecto
   }
 }
 
-/// The numerical reference at the sample times (rkf78 at kReferenceTol, dense output), and the
-/// comparison. A reference that did not reach a sample time is reported as failed and that sample
-/// is not compared ("numeric": null).
+/// The comparison of the library (compare_analytic) as JSON: the samples, analytic beside numeric
+/// ("numeric": null where the reference did not reach the time).
 struct Comparison {
   io::Json samples = io::Json::array();
   std::optional<double> max_err;
@@ -149,26 +127,14 @@ struct Comparison {
 
 Comparison compare(const io::Scenario& sc, const AnalyticSolution& sol,
                    const std::vector<double>& times) {
-  Comparison c;
-  if (times.empty()) return c;
-  const Body& b = sc.model.body();
-  std::vector<std::optional<State>> numeric(times.size());
-  MethodSettings ref{"rkf78", 0.0, kReferenceTol, kReferenceTol, std::nullopt};
   IntegrateOptions opt;
   if (sc.integrate.max_steps) opt.max_steps = *sc.integrate.max_steps;
-  c.reference = run_method_sampled(ref, sc.model, sc.initial, 0.0, times.back(),
-                                   OutputTimes::list(times, 0.0, times.back()), opt,
-                                   [&](std::int64_t k, double, const State& x) { numeric[k] = x; });
-  for (std::size_t k = 0; k < times.size(); ++k) {
-    const State an = analytic_state(sol, times[k]);
-    io::Json s{{"t", times[k]}, {"analytic", state_json(b, an)}, {"numeric", nullptr}};
-    if (const auto& x = numeric[k]) {
-      const double err = std::max((omega(b, an) - omega(b, *x)).cwiseAbs().maxCoeff(),
-                                  (an.gamma - x->gamma).cwiseAbs().maxCoeff());
-      c.max_err = std::max(c.max_err.value_or(0.0), err);
-      s["numeric"] = state_json(b, *x);
-      ++c.compared;
-    }
+  const AnalyticComparison r = compare_analytic(sc.model.quadratic(), sc.initial, sol, times, opt);
+  Comparison c{io::Json::array(), r.max_abs_error, r.reference, r.compared};
+  const Body& b = sc.model.body();
+  for (std::size_t k = 0; k < r.times.size(); ++k) {
+    io::Json s{{"t", r.times[k]}, {"analytic", state_json(b, r.analytic[k])}, {"numeric", nullptr}};
+    if (const auto& x = r.numeric[k]) s["numeric"] = state_json(b, *x);
     c.samples.push_back(s);
   }
   return c;

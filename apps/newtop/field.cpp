@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "command.hpp"
+#include "newtop/analysis/field_scan.hpp"
 #include "newtop/exact/multipole.hpp"
 #include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
@@ -52,6 +53,24 @@ struct Scan {
   int n;
 };
 
+io::Json values_json(const FieldSample& x);
+void print_values(const char* name, const FieldSample& x);
+
+/// One frame's values: gamma and the exact, approximate and difference values, labelled.
+io::Json frame_json(const char* frame, const FieldComparison& c) {
+  return {{"frame", frame},
+          {"gamma", io::to_json(c.gamma)},
+          {"exact", values_json(c.exact)},
+          {"approx", values_json(c.approx)},
+          {"difference", values_json(c.difference)}};
+}
+
+void print_frame(const FieldComparison& c) {
+  print_values("exact ", c.exact);
+  print_values("approx", c.approx);
+  print_values("diff  ", c.difference);
+}
+
 Scan parse_scan(const std::string& text) {
   Scan s{};
   char c1 = 0, c2 = 0;
@@ -70,27 +89,14 @@ io::Json matrix_json(const Mat3& m) {
   return J;
 }
 
-/// The field's values at γ and its Hessian ∂²V/∂γ².
-struct Values {
-  FieldValues v;
-  Mat3 hessian;
-};
-
-io::Json values_json(const Values& x) {
-  const FieldValues& v = x.v;
+io::Json values_json(const FieldSample& x) {
+  const FieldValues& v = x.values;
   return {{"potential", v.potential},
           {"grad_gamma", io::to_json(v.grad_gamma)},
           {"dV_dR", v.dV_dR},
           {"moment", io::to_json(v.moment)},
           {"force", io::to_json(v.force)},
           {"hessian_gamma", matrix_json(x.hessian)}};
-}
-
-Values difference(const Values& a, const Values& b) {
-  const FieldValues &x = a.v, &y = b.v;
-  return {{x.potential - y.potential, x.grad_gamma - y.grad_gamma, x.dV_dR - y.dV_dR,
-           x.moment - y.moment, x.force - y.force},
-          a.hessian - b.hessian};
 }
 
 io::Json mass_properties_json(const MassProperties& mp, const Body& body) {
@@ -103,19 +109,8 @@ io::Json mass_properties_json(const MassProperties& mp, const Body& body) {
            io::Json::array({io::to_json(P.col(0)), io::to_json(P.col(1)), io::to_json(P.col(2))})}};
 }
 
-/// Least-squares slope of log y against log x.
-double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double n = static_cast<double>(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double lx = std::log(x[i]), ly = std::log(y[i]);
-    sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
-void print_values(const char* name, const Values& x) {
-  const FieldValues& v = x.v;
+void print_values(const char* name, const FieldSample& x) {
+  const FieldValues& v = x.values;
   std::cout << name << "  V = " << format_number(v.potential)
             << "\n        dV/dgamma = " << format_vector(v.grad_gamma)
             << "\n        dV/dR = " << format_number(v.dV_dR)
@@ -143,43 +138,34 @@ int run(const FieldArgs& a) {
   const double R = a.R.value_or(centre.R);
   const Body& body = sc.model.body();
   const Mat3& P = body.principal_axes();
-  const Vec3 gamma = P.transpose() * parse_gamma(a.gamma);  // user frame → principal axes
-  auto at = [&](double r) {
-    const ExactField x = ExactField::make(mass_model, mu, r, P);
-    const MultipoleField q = MultipoleField::make(*mass_model, 3, mu, r, P);
-    return std::pair{Values{field_values(x, gamma), hessian_gamma(body, x, gamma)},
-                     Values{field_values(q, gamma), hessian_gamma(body, q, gamma)}};
-  };
+  const Vec3 given = parse_gamma(a.gamma);
+  const Vec3 gamma = P.transpose() * given;  // user frame → principal axes
+  const FieldComparison principal = compare_field(mass_model, body, mu, R, gamma);
+  FieldComparison input = in_input_frame(principal, P);
+  input.gamma = given;  // as given (normalised), not rotated there and back
   io::Json j;
   j["scenario"] = sc.source;
   j["gamma"] = io::to_json(gamma);
+  j["frame"] = "principal";  // of gamma, exact, approx and difference; input_frame: the user's
   j["mu"] = mu;
   j["R"] = R;
   j["field"] = field_json(sc.model);
   j["mass_properties"] = mass_properties_json(mass_properties(*mass_model), body);
-  const auto [ex, ap] = at(R);
-  j["exact"] = values_json(ex);
-  j["approx"] = values_json(ap);
-  j["difference"] = values_json(difference(ex, ap));
+  j["exact"] = values_json(principal.exact);
+  j["approx"] = values_json(principal.approx);
+  j["difference"] = values_json(principal.difference);
   const TruncationError t = truncation_error(MultipoleField::make(*mass_model, 3, mu, R, P), gamma);
   j["approx_truncation_error"] = {{"next_term", t.next_term}, {"bound", t.bound}};
+  j["input_frame"] = frame_json("input", input);
   if (a.scan) {
     const Scan s = parse_scan(*a.scan);
-    std::vector<double> Rs, dV, dL, rel;
-    for (int i = 0; i < s.n; ++i) {
-      const double r = s.R1 * std::pow(s.R2 / s.R1, static_cast<double>(i) / (s.n - 1));
-      const auto [x, q] = at(r);
-      Rs.push_back(r);
-      dV.push_back(std::abs(x.v.potential - q.v.potential));
-      dL.push_back((x.v.moment - q.v.moment).norm());
-      rel.push_back(dL.back() / x.v.moment.norm());
-    }
-    j["scan"] = {{"R", Rs},
-                 {"potential_error", dV},
-                 {"moment_error", dL},
-                 {"moment_relative_error", rel},
-                 {"slope_potential", loglog_slope(Rs, dV)},
-                 {"slope_moment", loglog_slope(Rs, dL)}};
+    const FieldScan f = scan_field_R(mass_model, body, mu, s.R1, s.R2, s.n, gamma);
+    j["scan"] = {{"R", f.R},
+                 {"potential_error", f.potential_error},
+                 {"moment_error", f.moment_error},
+                 {"moment_relative_error", f.moment_relative_error},
+                 {"slope_potential", f.slope_potential},
+                 {"slope_moment", f.slope_moment}};
   }
   if (a.json) {
     print_json(std::cout, j);
@@ -187,13 +173,15 @@ int run(const FieldArgs& a) {
   }
   std::cout << "newtop field " << sc.source << "\nmu = " << format_number(mu)
             << "   R = " << format_number(R)
-            << "   gamma (principal axes) = " << format_vector(gamma)
+            << "   gamma (input frame) = " << format_vector(input.gamma)
             << "\nbody  M = " << format_number(body.mass())
             << "   A, B, C = " << format_vector(body.inertia())
-            << "   r0 = " << format_vector(body.center_of_mass()) << "\n";
-  print_values("exact ", ex);
-  print_values("approx", ap);
-  print_values("diff  ", difference(ex, ap));
+            << "   r0 = " << format_vector(body.center_of_mass()) << " (principal axes)\n"
+            << "in the principal axes: gamma = " << format_vector(gamma) << "\n";
+  print_frame(principal);
+  std::cout << "in the input frame (the mass model's): gamma = " << format_vector(input.gamma)
+            << "\n";
+  print_frame(input);
   if (a.scan) {
     std::cout << "R                        |V - V_q|                |L - L_q|                |L - "
                  "L_q|/|L|\n";

@@ -8,7 +8,8 @@
 
 #include "command.hpp"
 #include "newtop/analysis/equilibria.hpp"
-#include "newtop/analysis/stability_spin.hpp"
+#include "newtop/analysis/stability_report.hpp"
+#include "newtop/io/analysis_json.hpp"
 #include "newtop/io/json.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
@@ -28,35 +29,12 @@ struct StabilityArgs {
   bool json = false;
 };
 
-/// The state analysed, where it came from, and its polishing by Newton's method.
-struct Chosen {
-  State state;
-  std::optional<int> axis;  // the principal axis of a spin γ = e_axis, ω ∥ e_axis
-  PolishedFixedPoint polish;
-};
-
 std::optional<int> parse_axis(const std::optional<std::string>& axis) {
   if (!axis) return std::nullopt;
   if (*axis == "x") return 0;
   if (*axis == "y") return 1;
   if (*axis == "z") return 2;
   throw InputError("--axis: expected x, y or z, found '" + *axis + "'");
-}
-
-/// The principal axis i with γ = e_i and ω ∥ e_i (or ω = 0), where the spin family about it is a
-/// fixed point for every Ω (M g r0 along e_i).
-std::optional<int> spin_axis_of(const QuadraticModel& model, const State& s) {
-  const Vec3 w = omega(model.body, s);
-  const Vec3 b = model.body.mass() * model.field.g * model.body.center_of_mass();
-  for (int i = 0; i < 3; ++i) {
-    const Vec3 e = Vec3::Unit(i);
-    if ((s.gamma - e).norm() <= kFixedPointTolerance &&
-        w.cross(e).norm() <= kFixedPointTolerance * std::max(w.norm(), 1.0) &&
-        b.cross(e).norm() <= kFixedPointTolerance * b.norm()) {
-      return i;
-    }
-  }
-  return std::nullopt;
 }
 
 /// A number, or `missing` when the JSON value is null (never "null" in a human summary).
@@ -81,19 +59,18 @@ State listed_equilibrium(const io::Scenario& sc, int k) {
   return state_from_omega(sc.model.body(), Vec3::Zero(), set.equilibria[k - 1].gamma);
 }
 
-/// The state to analyse: --axis (exact), --equilibrium or [initial] (polished by Newton).
-Chosen chosen_state(const io::Scenario& sc, const StabilityArgs& a) {
+/// The report of the state to analyse: --axis (exact), --equilibrium or [initial] (polished by
+/// Newton); the library analyses it, the messages name the options.
+StabilityReport chosen_report(const io::Scenario& sc, const StabilityArgs& a) {
   const std::optional<int> axis = parse_axis(a.axis);
   if (a.omega && !axis) throw InputError("--omega: needs --axis x|y|z to say which axis spins");
   if (a.equilibrium && axis) throw InputError("--equilibrium: give either --equilibrium or --axis");
   if (axis) {
-    const State s = principal_spin(sc.model.body(), *axis, a.omega.value_or(0.0));
-    const double res = fixed_point_residual(sc.model, s);
-    if (!(res <= kFixedPointTolerance)) {
-      throw InputError("--axis " + *a.axis + ": expected a permanent rotation, found residual " +
-                       format_number(res) + " of d(m, gamma)/dt (M g r0 is not along the axis)");
+    try {
+      return stability_of_axis(sc.model, *axis, a.omega.value_or(0.0));
+    } catch (const InputError& e) {
+      throw InputError("--" + std::string(e.what()));
     }
-    return {s, axis, polish_fixed_point(sc.model, s)};
   }
   const State given = a.equilibrium ? listed_equilibrium(sc, *a.equilibrium) : sc.initial;
   const PolishedFixedPoint p = polish_fixed_point(sc.model, given);
@@ -101,53 +78,16 @@ Chosen chosen_state(const io::Scenario& sc, const StabilityArgs& a) {
     throw InputError(
         (a.equilibrium ? "--equilibrium " + std::to_string(*a.equilibrium)
                        : sc.source + ": [initial]") +
-        ": expected an equilibrium or a permanent rotation (to " +
-        "three digits or more), found residual " + format_number(p.residual_given) +
-        " of d(m, gamma)/dt, and " +
-        (p.iterations == 0 ? std::string("Newton's method finds no fixed point near it")
-         : p.correction > kPolishRadius
-             ? "the fixed point Newton's method finds is " + format_number(p.correction) +
-                   " away (more than " + format_number(kPolishRadius) + ")"
-             : "Newton's method stops at residual " + format_number(p.residual)) +
-        "; see newtop equilibria (and --equilibrium K) / rotations, or use --axis and --omega");
+        ": expected an equilibrium or a permanent rotation (to three digits or more), " +
+        polish_failure(p) +
+        "; see newtop equilibria (and --equilibrium K) / rotations, or use --axis and "
+        "--omega");
   }
   // The spin families about principal axes (and their thresholds) are the quadratic field's.
   const std::optional<int> spin_axis = sc.model.kind() == FieldKind::quadratic
                                            ? spin_axis_of(sc.model.quadratic(), p.state)
                                            : std::nullopt;
-  return {p.state, spin_axis, p};
-}
-
-io::Json report(const io::Scenario& sc, const Chosen& c) {
-  // The field's own linearisation; the spin thresholds only with an axis (the quadratic field).
-  const State& s = c.state;
-  const std::optional<int> axis = c.axis;
-  const Spectrum sp = linear_stability(sc.model, s);
-  io::Json j;
-  j["eigenvalues"] = io::Json::array();
-  for (const auto& z : sp.eigenvalues) j["eigenvalues"].push_back({z.real(), z.imag()});
-  j["max_real_part"] = sp.max_real_part;
-  j["linearly_stable"] = sp.linearly_stable;
-  j["lyapunov_stable"] = optional_json(sp.lyapunov_stable);
-  const Body& body = sc.model.body();
-  std::optional<double> formula, numeric;
-  if (axis) {
-    const QuadraticModel& m = sc.model.quadratic();
-    const bool no_offset = m.body.mass() * m.field.g * m.body.center_of_mass().norm() == 0.0;
-    if (no_offset) formula = beletsky_threshold(m.body, m.field.lambda_, *axis);
-    numeric = numeric_threshold(m, *axis);
-  }
-  j["threshold_omega_formula"] = optional_json(formula);
-  j["threshold_omega_numeric"] = optional_json(numeric);
-  j["axis"] = axis ? io::Json(std::string(1, "xyz"[*axis])) : io::Json(nullptr);
-  j["axis_class"] = axis ? io::Json(to_string(axis_class(body, *axis))) : io::Json(nullptr);
-  j["omega"] = io::to_json(omega(body, s));
-  j["gamma"] = io::to_json(s.gamma);
-  j["residual"] = fixed_point_residual(sc.model, s);
-  j["polish"] = {{"residual_given", c.polish.residual_given},
-                 {"correction", c.polish.correction},
-                 {"iterations", c.polish.iterations}};
-  return j;
+  return stability_report(sc.model, p.state, p, spin_axis);
 }
 
 std::string complex_text(const io::Json& z) {
@@ -156,7 +96,7 @@ std::string complex_text(const io::Json& z) {
          "i";
 }
 
-void print_report(std::ostream& os, const io::Json& j) {
+void print_report(std::ostream& os, const io::Json& j, const std::string& formula_note) {
   const io::Json& p = j["polish"];
   if (p["iterations"].get<int>() > 0) {
     os << "polished  by Newton's method: correction "
@@ -178,9 +118,7 @@ void print_report(std::ostream& os, const io::Json& j) {
   if (!j["axis"].is_null()) {
     os << "spin axis " << j["axis"].get<std::string>() << " (" << j["axis_class"].get<std::string>()
        << " moment); threshold Omega: formula "
-       << optional_text(j["threshold_omega_formula"],
-                        "not applicable (largest-moment axis, r0 = 0, lambda > 0 only)")
-       << ", numeric "
+       << optional_text(j["threshold_omega_formula"], formula_note) << ", numeric "
        << optional_text(j["threshold_omega_numeric"], "none (no unstable-to-stable change)")
        << "\n";
   }
@@ -227,7 +165,7 @@ int run(const StabilityArgs& a) {
                                            : "--scan-omega") +
                           " (spins about principal axes and their thresholds)");
   }
-  const Chosen c = chosen_state(sc, a);
+  const StabilityReport c = chosen_report(sc, a);
   if ((a.scan_omega || a.scan) && !c.axis) {
     throw InputError(
         std::string(a.scan ? "--scan" : "--scan-omega") +
@@ -236,7 +174,7 @@ int run(const StabilityArgs& a) {
   // The diagram's file is created (and checked against the inputs) before any work.
   std::unique_ptr<io::AtomicFile> file;
   if (a.out) file = std::make_unique<io::AtomicFile>(*a.out, sc.input_files);
-  io::Json j = report(sc, c);
+  io::Json j = io::to_json(c, sc.model.body());
   if (a.equilibrium) j["equilibrium"] = *a.equilibrium;
   if (omega_range) j["scan"] = omega_scan(sc.model.quadratic(), *c.axis, *omega_range, file.get());
   if (grid) grid_scan(sc.model.quadratic(), *c.axis, a.omega.value_or(0.0), *grid, *file);
@@ -250,7 +188,7 @@ int run(const StabilityArgs& a) {
   std::cout << "newtop stability " << sc.source << "\n";
   print_model(std::cout, sc.model);
   if (a.equilibrium) std::cout << "equilibrium " << *a.equilibrium << " of newtop equilibria\n";
-  print_report(std::cout, j);
+  print_report(std::cout, j, c.formula_note);
   if (omega_range) print_omega_scan(std::cout, j["scan"]);
   if (a.out) std::cout << "diagram written to " << *a.out << "\n";
   return kExitOk;

@@ -1,6 +1,11 @@
 #pragma once
 /// \file
-/// Umbrella header: the whole library (io/ excluded: link newtop::io and include its headers).
+/// Umbrella header: every module of the library — model, exact fields, integration (the compiled
+/// entry points and the steppers of one's own: splitting, Taylor), analysis, phase space (sections,
+/// chaos), orbit — without Boost.Odeint or Boost.Math. The templates that run the Runge–Kutta
+/// methods on a BasicModel<F> (newtop/integrate/methods.hpp, runge_kutta.hpp, dop853.hpp,
+/// newtop/phase/section_run.hpp, chaos_run.hpp) are included on their own by those who build
+/// their own runs; io/ and sweep/ come with newtop::io (find_package(newtop COMPONENTS io)).
 
 #include "newtop/analysis/analytic.hpp"
 #include "newtop/analysis/continuation.hpp"
@@ -19,16 +24,30 @@
 #include "newtop/exact/mass_models.hpp"
 #include "newtop/exact/multipole.hpp"
 #include "newtop/exact/polyhedron.hpp"
+#include "newtop/integrate/composition_tables.hpp"
 #include "newtop/integrate/concepts.hpp"
 #include "newtop/integrate/driver.hpp"
 #include "newtop/integrate/free_body_flow.hpp"
-#include "newtop/integrate/methods.hpp"
+#include "newtop/integrate/method_settings.hpp"
 #include "newtop/integrate/run.hpp"
-#include "newtop/integrate/sampled.hpp"
+#include "newtop/integrate/splitting.hpp"
+#include "newtop/integrate/taylor.hpp"
 #include "newtop/model/attitude.hpp"
 #include "newtop/model/body.hpp"
 #include "newtop/model/field.hpp"
 #include "newtop/model/integrals.hpp"
 #include "newtop/model/model.hpp"
-#include "newtop/phase/chaos_run.hpp"
-#include "newtop/phase/section_run.hpp"
+#include "newtop/model/state_checks.hpp"
+#include "newtop/orbit/debra_delp.hpp"
+#include "newtop/orbit/libration.hpp"
+#include "newtop/orbit/orbit.hpp"
+#include "newtop/orbit/orbit_equilibria.hpp"
+#include "newtop/orbit/orbit_integrate.hpp"
+#include "newtop/orbit/orbit_model.hpp"
+#include "newtop/orbit/orbit_section.hpp"
+#include "newtop/orbit/orbit_stability.hpp"
+#include "newtop/orbit/spin_orbit.hpp"
+#include "newtop/phase/chaos.hpp"
+#include "newtop/phase/section.hpp"
+#include "newtop/phase/surface.hpp"
+#include "newtop/version.hpp"

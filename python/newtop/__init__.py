@@ -2,7 +2,9 @@
 
 The compiled extension ``newtop._newtop`` (pybind11) gives the library: ``Body``,
 ``QuadraticField``, ``Model``, ``State``, ``load_scenario``, ``integrals``, ``integrate`` (numpy
-arrays); ``newtop.commands`` gives one function per subcommand (``newtop.simulate``,
+arrays); ``newtop.analyses`` gives the analyses on those objects (``newtop.equilibria(model)``,
+``newtop.stability``, ``newtop.chaos``, ``newtop.section``, ``newtop.analytic``: typed results
+with numpy arrays); ``newtop.commands`` gives one function per subcommand (``newtop.simulate``,
 ``newtop.integrals``, ``newtop.equilibria``, ``newtop.stability``, ``newtop.analytic``, ...) that
 returns the subcommand's JSON as a dict. Both are re-exported here (docs/python.md).
 
@@ -18,9 +20,11 @@ try:  # the compiled extension, when the build made one (PYTHONPATH=build/python
                           conserved_integrals, equilibrium_family, integrate, is_orbit_scenario,
                           load_scenario, parse_scenario, resonance_family, rotation_family)
     from ._newtop import integrals as integrals_at  # noqa: F401  (the library's, at a state)
-    from .commands import (analytic, chaos, equilibria, field, find_integrals, integrals,  # noqa: F401
-                           libration, rotations, section, simulate, stability, sweep,
-                           view)
+    from ._newtop import (AnalyticResult, ChaosResult, Equilibria, Section,  # noqa: F401
+                          StabilityReport)
+    from .commands import (field, find_integrals, integrals, libration, rotations,  # noqa: F401
+                           simulate, sweep, view)
+    from .analyses import analytic, chaos, equilibria, section, stability  # noqa: F401
 
     HAVE_EXTENSION = True
 except ModuleNotFoundError as e:  # absent is fine; present but broken is an error
@@ -30,7 +34,8 @@ except ModuleNotFoundError as e:  # absent is fine; present but broken is an err
 
 __all__ = ["HAVE_EXTENSION", "__version__"]
 if HAVE_EXTENSION:
-    __all__ += ["Body", "InputError", "MassModel", "Model", "QuadraticField", "Scenario", "State",
+    __all__ += ["AnalyticResult", "ChaosResult", "Equilibria", "Section", "StabilityReport",
+                "Body", "InputError", "MassModel", "Model", "QuadraticField", "Scenario", "State",
                 "analytic", "chaos", "conserved_integrals", "equilibria", "field", "find_integrals",
                 "integrals", "integrals_at", "integrate", "is_orbit_scenario", "libration",
                 "load_scenario", "parse_scenario", "rotations", "section", "simulate", "stability", "sweep",

@@ -1,6 +1,6 @@
 """Type stubs of the compiled module newtop._newtop (python/src)."""
 
-from typing import Any, Optional, Sequence, overload
+from typing import Any, Optional, Sequence, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -50,9 +50,9 @@ class QuadraticField:
 class State:
     m: np.ndarray
     gamma: np.ndarray
-    def __init__(self, m: Vec3, gamma: Vec3) -> None: ...
+    def __init__(self, m: Vec3, gamma: Vec3, *, normalize: bool = False) -> None: ...
     @staticmethod
-    def from_omega(body: Body, omega: Vec3, gamma: Vec3) -> State: ...
+    def from_omega(body: Body, omega: Vec3, gamma: Vec3, *, normalize: bool = False) -> State: ...
     def omega(self, body: Body) -> np.ndarray: ...
 
 class MassModel:
@@ -96,28 +96,25 @@ class Model:
     def grad_gamma(self, gamma: Vec3) -> np.ndarray: ...
     def hessian_gamma(self, gamma: Vec3) -> np.ndarray: ...
     def moment(self, gamma: Vec3) -> np.ndarray: ...
-    def rhs(self, state: State) -> State: ...
+    def rhs(self, x: Union[State, Sequence[float]]) -> npt.NDArray[np.float64]: ...
     def quadratic_approximation(self) -> Model: ...
 
 class Scenario:
+    def __init__(self, model: Model, initial: State, *, t0: float = 0.0,
+                 t_end: Optional[float] = None, method: Optional[str] = None,
+                 step: Optional[float] = None, tol: Optional[float] = None,
+                 max_steps: Optional[int] = None) -> None: ...
     @property
     def source(self) -> str: ...
-    @property
-    def model(self) -> Model: ...
-    @property
-    def initial(self) -> State: ...
+    model: Model
+    initial: State
     @property
     def attitude(self) -> Optional[npt.NDArray[np.float64]]: ...
-    @property
-    def t0(self) -> float: ...
-    @property
-    def t_end(self) -> Optional[float]: ...
-    @property
-    def method(self) -> Optional[str]: ...
-    @property
-    def step(self) -> Optional[float]: ...
-    @property
-    def tol(self) -> Optional[float]: ...
+    t0: float
+    t_end: Optional[float]
+    method: Optional[str]
+    step: Optional[float]
+    tol: Optional[float]
     @property
     def input_files(self) -> list[str]: ...
 
@@ -130,7 +127,8 @@ def conserved_integrals(model: Model) -> list[str]: ...
 def integrate(model: Model, state: State, t_end: float, *, t0: float = 0.0,
               method: Optional[str] = None, step: Optional[float] = None,
               tol: Optional[float] = None, max_steps: Optional[int] = None,
-              quaternion: Optional[Sequence[float]] = None) -> dict[str, Any]: ...
+              quaternion: Optional[Sequence[float]] = None,
+              t_eval: Optional[Sequence[float]] = None) -> dict[str, Any]: ...
 @overload
 def integrate(scenario: Scenario, *, t_end: Optional[float] = None, method: Optional[str] = None,
               step: Optional[float] = None, tol: Optional[float] = None) -> dict[str, Any]: ...
@@ -141,3 +139,87 @@ def rotation_family(body: Body, lambda_: float, omega0: float, omega1: float,
                     axis: Optional[int] = None) -> dict[str, Any]: ...
 def equilibrium_family(inertia: npt.ArrayLike, radial: int, normal: int, index: int, p0: float,
                        p1: float) -> dict[str, Any]: ...
+
+Array = npt.NDArray[np.float64]
+
+class Equilibria:
+    count: int
+    gamma: Array
+    kappa: Array
+    potential: Array
+    hessian_eigenvalues: Array
+    staude_residual: Array
+    type: list[str]
+    every_orientation: bool
+    circles: list[dict[str, Any]]
+    minima: int
+    saddles: int
+    maxima: int
+    degenerate: int
+    euler_characteristic: int
+    count_rule_holds: bool
+
+class StabilityReport:
+    state: State
+    eigenvalues: npt.NDArray[np.complex128]
+    max_real_part: float
+    linearly_stable: bool
+    lyapunov_stable: Optional[bool]
+    threshold_omega_formula: Optional[float]
+    threshold_omega_numeric: Optional[float]
+    formula_note: str
+    axis: Optional[str]
+    gamma: Array
+    residual: float
+    polish: dict[str, float]
+
+class ChaosResult:
+    lyapunov_max: float
+    megno: float
+    megno_y: float
+    fli: float
+    spectrum: Optional[Array]
+    t_end: float
+    outcome: str
+    steps: int
+    method: str
+    history: Optional[dict[str, Array]]
+
+class Section:
+    surface: str
+    count: int
+    orbit: npt.NDArray[np.int32]
+    t: Array
+    m: Array
+    gamma: Array
+    omega: Array
+    outcomes: list[str]
+    max_surface_residual: float
+
+class AnalyticResult:
+    case: str
+    reason: str
+    period: Optional[float]
+    t: Array
+    omega: Array
+    gamma: Array
+    m: Array
+    numeric_omega: Array
+    numeric_gamma: Array
+    max_abs_error: Optional[float]
+    reference_outcome: str
+
+def _equilibria(model: Model) -> Equilibria: ...
+def _stability(model: Model, *, equilibrium: Optional[int] = None, state: Optional[State] = None,
+               axis: Union[str, int, None] = None,
+               omega: Optional[float] = None) -> StabilityReport: ...
+def _chaos(model: Model, state: State, t_end: float, *, t0: float = 0.0,
+           method: Optional[str] = None, step: Optional[float] = None,
+           tol: Optional[float] = None, spectrum: bool = False, max_steps: Optional[int] = None,
+           history: bool = False) -> ChaosResult: ...
+def _section(model: Model, states: Sequence[State], t_end: float, *, surface: str = "gamma3 = 0",
+             crossings: int = 1000, direction: str = "up", t0: float = 0.0,
+             method: Optional[str] = None, step: Optional[float] = None,
+             tol: Optional[float] = None, max_steps: Optional[int] = None) -> Section: ...
+def _analytic(model: Model, state: State, times: Sequence[float], *,
+              max_steps: Optional[int] = None) -> AnalyticResult: ...

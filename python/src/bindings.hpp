@@ -3,6 +3,12 @@
 
 #include <pybind11/pybind11.h>
 
+#include <optional>
+#include <string>
+
+#include "newtop/integrate/method_settings.hpp"
+#include "newtop/model/model.hpp"
+
 namespace newtop::python {
 
 /// Body, QuadraticField, Model, State, Scenario and the model's functions (model.cpp).
@@ -13,6 +19,14 @@ void bind_mass_models(pybind11::module_& m);
 
 /// integrate(): a run into numpy arrays (trajectory.cpp).
 void bind_trajectory(pybind11::module_& m);
+
+/// equilibria, stability, chaos, section and analytic on Python objects (analyses.cpp).
+void bind_analyses(pybind11::module_& m);
+
+/// The method as the command line resolves it: a name, or the default for a step (splitting6) or
+/// a tolerance (taylor on the quadratic field, dop853 on the others); one of step and tol.
+MethodSettings method_settings(const Model& model, const std::optional<std::string>& name,
+                               std::optional<double> step, std::optional<double> tol);
 
 /// _run_command_line(): the command line in-process, for the per-subcommand functions of the
 /// package (command_line.cpp).

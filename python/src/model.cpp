@@ -9,6 +9,7 @@
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/scenario.hpp"
 #include "newtop/model/integrals.hpp"
+#include "newtop/model/state_checks.hpp"
 
 namespace py = pybind11;
 
@@ -77,16 +78,34 @@ void bind_field(py::module_& m) {
       });
 }
 
+/// A state the library accepts: check_unit_gamma's words, or gamma rescaled with normalize.
+State checked_state(const Vec3& m_, const Vec3& gamma, bool normalize) {
+  State s{m_, normalize ? normalized_gamma(gamma) : gamma};
+  validate(s);
+  return s;
+}
+
 void bind_state(py::module_& m) {
   py::class_<State>(m, "State",
                     "The Euler-Poisson state (docs/model.md §4): angular momentum m = I omega + k "
                     "and gamma, the unit vector from the centre towards O, in body axes.")
-      .def(py::init([](const Vec3& m_, const Vec3& gamma) {
-             return State{m_, gamma};
+      .def(py::init([](const Vec3& m_, const Vec3& gamma, bool normalize) {
+             return checked_state(m_, gamma, normalize);
            }),
-           py::arg("m"), py::arg("gamma"))
-      .def_static("from_omega", &state_from_omega, py::arg("body"), py::arg("omega"),
-                  py::arg("gamma"), "m = I omega + k")
+           py::arg("m"), py::arg("gamma"), py::kw_only(), py::arg("normalize") = false,
+           "m finite and gamma a unit vector (to 1e-12), as the library checks every state; "
+           "normalize=True rescales gamma to unit length instead.")
+      .def_static(
+          "from_omega",
+          [](const Body& body, const Vec3& w, const Vec3& gamma, bool normalize) {
+            if (!w.allFinite()) {
+              throw InputError("omega: expected finite numbers, found " + format_vector(w));
+            }
+            const State s = state_from_omega(body, w, gamma);
+            return checked_state(s.m, gamma, normalize);
+          },
+          py::arg("body"), py::arg("omega"), py::arg("gamma"), py::kw_only(),
+          py::arg("normalize") = false, "m = I omega + k; gamma checked as by State(m, gamma)")
       .def_readwrite("m", &State::m)
       .def_readwrite("gamma", &State::gamma)
       .def(
@@ -120,8 +139,23 @@ void bind_model_class(py::module_& m) {
           "moment", [](const Model& x, const Vec3& g) { return moment(x, g); }, py::arg("gamma"),
           "the field's moment about O: gamma x dV/dgamma")
       .def(
-          "rhs", [](const Model& x, const State& s) { return rhs(x, s); }, py::arg("state"),
-          "(dm/dt, dgamma/dt) of the Euler-Poisson equations (docs/model.md §4)")
+          "rhs",
+          [](const Model& x, const py::object& state) {
+            State s;
+            if (py::isinstance<State>(state)) {
+              s = state.cast<State>();
+            } else {
+              const auto v = state.cast<Eigen::Matrix<double, 6, 1>>();
+              s = State{v.head<3>(), v.tail<3>()};
+            }
+            const State d = rhs(x, s);
+            Eigen::Matrix<double, 6, 1> out;
+            out << d.m, d.gamma;
+            return out;
+          },
+          py::arg("x"),
+          "(dm/dt, dgamma/dt) of the Euler-Poisson equations (docs/model.md §4) as an array of "
+          "6, at x = a State or an array (m1, m2, m3, gamma1, gamma2, gamma3)")
       .def(
           "quadratic_approximation",
           [](const Model& x) { return Model(quadratic_approximation(x)); },
@@ -137,10 +171,36 @@ void bind_model_class(py::module_& m) {
 }
 
 void bind_scenario(py::module_& m) {
-  py::class_<io::Scenario>(m, "Scenario", "A scenario file, read and checked (docs/scenario.md).")
-      .def_readonly("source", &io::Scenario::source, "the file it was read from")
-      .def_readonly("model", &io::Scenario::model)
-      .def_readonly("initial", &io::Scenario::initial)
+  py::class_<io::Scenario>(m, "Scenario",
+                           "A scenario: a model, an initial state and the [integrate] settings "
+                           "(docs/scenario.md), read from a file or built and edited in code.")
+      .def(py::init([](const Model& model, const State& initial, double t0,
+                       std::optional<double> t_end, std::optional<std::string> method,
+                       std::optional<double> step, std::optional<double> tol,
+                       std::optional<std::int64_t> max_steps) {
+             validate(initial);
+             io::Scenario s{"<python>", model, initial, std::nullopt, {}, {}, {}};
+             s.integrate.t0 = t0;
+             s.integrate.t_end = t_end;
+             s.integrate.method = std::move(method);
+             s.integrate.step = step;
+             s.integrate.tol = tol;
+             s.integrate.max_steps = max_steps;
+             return s;
+           }),
+           py::arg("model"), py::arg("initial"), py::kw_only(), py::arg("t0") = 0.0,
+           py::arg("t_end") = py::none(), py::arg("method") = py::none(),
+           py::arg("step") = py::none(), py::arg("tol") = py::none(),
+           py::arg("max_steps") = py::none(),
+           "A scenario built in code; the analyses take it as they take a model and a state.")
+      .def_readonly("source", &io::Scenario::source, "the file it was read from ('<python>')")
+      .def_readwrite("model", &io::Scenario::model)
+      .def_property(
+          "initial", [](const io::Scenario& s) { return s.initial; },
+          [](io::Scenario& s, const State& x) {
+            validate(x);
+            s.initial = x;
+          })
       .def_property_readonly(
           "attitude",
           [](const io::Scenario& s) -> std::optional<Eigen::Vector4d> {
@@ -149,11 +209,21 @@ void bind_scenario(py::module_& m) {
                                    s.attitude->z());
           },
           "the initial attitude [w, x, y, z] (body -> inertial, scalar first), or None")
-      .def_property_readonly("t0", [](const io::Scenario& s) { return s.integrate.t0; })
-      .def_property_readonly("t_end", [](const io::Scenario& s) { return s.integrate.t_end; })
-      .def_property_readonly("method", [](const io::Scenario& s) { return s.integrate.method; })
-      .def_property_readonly("step", [](const io::Scenario& s) { return s.integrate.step; })
-      .def_property_readonly("tol", [](const io::Scenario& s) { return s.integrate.tol; })
+      .def_property(
+          "t0", [](const io::Scenario& s) { return s.integrate.t0; },
+          [](io::Scenario& s, const double& v) { s.integrate.t0 = v; })
+      .def_property(
+          "t_end", [](const io::Scenario& s) { return s.integrate.t_end; },
+          [](io::Scenario& s, const std::optional<double>& v) { s.integrate.t_end = v; })
+      .def_property(
+          "method", [](const io::Scenario& s) { return s.integrate.method; },
+          [](io::Scenario& s, const std::optional<std::string>& v) { s.integrate.method = v; })
+      .def_property(
+          "step", [](const io::Scenario& s) { return s.integrate.step; },
+          [](io::Scenario& s, const std::optional<double>& v) { s.integrate.step = v; })
+      .def_property(
+          "tol", [](const io::Scenario& s) { return s.integrate.tol; },
+          [](io::Scenario& s, const std::optional<double>& v) { s.integrate.tol = v; })
       .def_readonly("input_files", &io::Scenario::input_files)
       .def("__repr__", [](const io::Scenario& s) { return "Scenario('" + s.source + "')"; });
   m.def("load_scenario", &io::load_scenario, py::arg("path"),

@@ -119,9 +119,10 @@ Quaternion unit_quaternion(const Eigen::Vector4d& v) {
   return Quaternion(v[0] / n, v[1] / n, v[2] / n, v[3] / n);
 }
 
-/// The method as the command line resolves it: a name, or the default for a step or a tolerance.
-MethodSettings settings(const Model& model, const std::optional<std::string>& name,
-                        std::optional<double> step, std::optional<double> tol) {
+}  // namespace
+
+MethodSettings method_settings(const Model& model, const std::optional<std::string>& name,
+                               std::optional<double> step, std::optional<double> tol) {
   if (step && tol) throw InputError("step, tol: expected one of them, found both");
   if (!step && !tol) throw InputError("step, tol: expected a step or a tolerance, found neither");
   MethodSettings s;
@@ -133,6 +134,29 @@ MethodSettings settings(const Model& model, const std::optional<std::string>& na
   return s;
 }
 
+namespace {
+
+/// The state at each time of t_eval (ascending, within [t0, t_end]): the method's dense output
+/// (run_method_sampled), as simulate --times writes it.
+py::dict run_sampled(const Model& model, const State& x0, double t0, double t1,
+                     const std::vector<double>& t_eval, const MethodSettings& method,
+                     IntegrateOptions options) {
+  Rows rows(model, false);
+  Outcome out;
+  {
+    const py::gil_scoped_release unlocked;
+    out = run_method_sampled(method, model, x0, t0, t1, OutputTimes::list(t_eval, t0, t1), options,
+                             [&](std::int64_t, double t, const State& s) { rows.add(t, s); });
+  }
+  py::dict d = columns(std::move(rows));
+  d["outcome"] = std::string(to_string(out.status));
+  d["steps"] = out.steps;
+  d["rejected"] = out.rejected;
+  d["method"] = method.name;
+  d["step"] = method.step;
+  return d;
+}
+
 }  // namespace
 
 void bind_trajectory(py::module_& m) {
@@ -141,16 +165,24 @@ void bind_trajectory(py::module_& m) {
       [](const Model& model, const State& state, double t_end, double t0,
          const std::optional<std::string>& method, std::optional<double> step,
          std::optional<double> tol, std::optional<std::int64_t> max_steps,
-         const std::optional<Eigen::Vector4d>& quaternion) {
+         const std::optional<Eigen::Vector4d>& quaternion,
+         const std::optional<std::vector<double>>& t_eval) {
         IntegrateOptions o;
         if (max_steps) o.max_steps = *max_steps;
+        const MethodSettings s = method_settings(model, method, step, tol);
+        if (t_eval) {
+          if (quaternion) throw InputError("t_eval: not with quaternion (the attitude)");
+          check_time_span(t0, t_end);
+          return run_sampled(model, state, t0, t_end, *t_eval, s, o);
+        }
         std::optional<Quaternion> q;
         if (quaternion) q = unit_quaternion(*quaternion);
-        return run(model, state, q, t0, t_end, settings(model, method, step, tol), o);
+        return run(model, state, q, t0, t_end, s, o);
       },
       py::arg("model"), py::arg("state"), py::arg("t_end"), py::kw_only(), py::arg("t0") = 0.0,
       py::arg("method") = py::none(), py::arg("step") = py::none(), py::arg("tol") = py::none(),
       py::arg("max_steps") = py::none(), py::arg("quaternion") = py::none(),
+      py::arg("t_eval") = py::none(),
       "Integrates the Euler-Poisson equations (docs/model.md §4) from (t0, state) to t_end with a "
       "method by name (splitting2..8, rk4, dopri5, rkf78, dop853, taylor); a step selects "
       "splitting6 by default and a tolerance taylor on the quadratic field, dop853 on the others. "
@@ -158,7 +190,9 @@ void bind_trajectory(py::module_& m) {
       "omega, gamma, m (N x 3), energy, area, geometric[, brun][, lagrange] (N), all views of "
       "one (N x W) array 'table'; and 'outcome', 'steps', 'rejected', 'method', 'step'. With "
       "quaternion=[w, x, y, z] (the attitude, body -> inertial, scalar first; a unit one within "
-      "1e-6, normalised) the run carries the attitude and adds 'quaternion' (N x 4).");
+      "1e-6, normalised) the run carries the attitude and adds 'quaternion' (N x 4). With "
+      "t_eval=times (ascending, in [t0, t_end]) the rows are the states at those times, from the "
+      "method's dense output (fixed-step methods land on each), instead of the accepted steps.");
   m.def(
       "integrate",
       [](const io::Scenario& sc, std::optional<double> t_end,

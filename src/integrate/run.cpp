@@ -1,6 +1,7 @@
 #include "newtop/integrate/run.hpp"
 
 #include "newtop/integrate/methods.hpp"
+#include "newtop/model/state_checks.hpp"
 
 namespace newtop {
 namespace {
@@ -34,12 +35,14 @@ Outcome run_any_sampled(const MethodSettings& method, const Model& model, const 
 
 Outcome run_method(const MethodSettings& method, const Model& model, const State& x, double t0,
                    double t1, IntegrateOptions options, const StepObserver<State>& observer) {
+  validate(static_cast<const State&>(x));
   return run_any(method, model, x, t0, t1, options, observer);
 }
 
 Outcome run_method(const MethodSettings& method, const Model& model, const OrientedState& x,
                    double t0, double t1, IntegrateOptions options,
                    const StepObserver<OrientedState>& observer) {
+  validate(static_cast<const State&>(x));
   return run_any(method, model, x, t0, t1, options, observer);
 }
 
@@ -47,6 +50,7 @@ Outcome run_method_sampled(const MethodSettings& method, const Model& model, con
                            double t0, double t1, const OutputTimes& times, IntegrateOptions options,
                            const SampleObserver<State>& sample,
                            const StepObserver<State>& observer) {
+  validate(static_cast<const State&>(x));
   return run_any_sampled(method, model, x, t0, t1, times, options, sample, observer);
 }
 
@@ -54,6 +58,7 @@ Outcome run_method_sampled(const MethodSettings& method, const Model& model, con
                            double t0, double t1, const OutputTimes& times, IntegrateOptions options,
                            const SampleObserver<OrientedState>& sample,
                            const StepObserver<OrientedState>& observer) {
+  validate(static_cast<const State&>(x));
   return run_any_sampled(method, model, x, t0, t1, times, options, sample, observer);
 }
 

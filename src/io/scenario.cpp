@@ -3,20 +3,19 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <string>
+#include <string_view>
 
 #include "file_check.hpp"
 #include "mesh_section.hpp"
 #include "newtop/exact/exact_field.hpp"
 #include "newtop/integrate/taylor.hpp"
+#include "newtop/model/state_checks.hpp"
 #include "scenario_sections.hpp"
 #include "toml_parse.hpp"
 
 namespace newtop::io {
 namespace {
-
-// γ must be a unit vector to this accuracy unless [initial] normalize = true: a file that writes
-// 15 significant digits passes, a hand-typed approximation such as [0.6, 0.8, 0.01] does not.
-constexpr double kUnitTolerance = 1e-12;
 
 const std::vector<std::string> kSections{"body",    "mass_model", "field",
                                          "initial", "integrate",  "output"};
@@ -75,16 +74,19 @@ State read_initial(TableReader& r, const Body& body, std::optional<Quaternion>& 
   const Vec3 P_omega = r.vec3("omega");
   Vec3 P_gamma = r.vec3("gamma");
   const bool normalize = r.boolean("normalize", false);
-  // The norm without overflow or underflow: of the vector scaled by its largest component.
-  const double largest = P_gamma.cwiseAbs().maxCoeff();
-  if (largest == 0.0) r.fail("gamma", "expected a unit vector, found [0, 0, 0]");
-  const Vec3 unit_scaled = P_gamma / largest;
-  const double norm = largest * unit_scaled.norm();
-  if (normalize) {
-    P_gamma = unit_scaled / unit_scaled.norm();
-  } else if (std::abs(norm - 1.0) > kUnitTolerance) {
-    r.fail("gamma", "expected a unit vector (|gamma| = 1 to 1e-12), found |gamma| = " +
-                        format_number(norm) + "; add normalize = true to [initial] to rescale it");
+  // The library's check (check_unit_gamma), located at [initial] gamma.
+  try {
+    if (normalize) {
+      P_gamma = normalized_gamma(P_gamma);
+    } else {
+      check_unit_gamma(P_gamma);
+    }
+  } catch (const InputError& e) {
+    std::string what = std::string(e.what()).substr(std::string_view("gamma: ").size());
+    if (!normalize && what.starts_with("expected a unit vector (")) {
+      what += "; add normalize = true to [initial] to rescale it";
+    }
+    r.fail("gamma", what);
   }
   attitude = read_attitude(r, normalize);
   r.finish();

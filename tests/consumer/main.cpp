@@ -1,5 +1,6 @@
 // Uses an installed newtop: every exported target and, through them, every dependency —
-// newtop::newtop (Eigen, Boost.Math, OpenMP) and newtop::io (toml++, nlohmann-json).
+// newtop::newtop (Eigen, Boost.Math, OpenMP inside the library) and newtop::io (toml++,
+// nlohmann-json). Built with -Wall -Wextra -Werror: the public headers compile clean.
 // Exit 0 only when each part gives the expected answer.
 #include <cmath>
 #include <cstdio>
@@ -33,17 +34,29 @@ bool integrate_heavy_top() {
   return out.status == Status::finished && drift < 1e-6;
 }
 
-/// newtop::newtop: the run compiled in the library (run.hpp, any Model) takes the same steps as
-/// the template on the model's field.
-bool compiled_run() {
-  const QuadraticModel q{Body::from_principal(Vec3(1, 2, 3), 1.0, Vec3(0, 0.1, 0.2)),
-                         QuadraticField::from_mu_R(1.0, 2.0)};
-  const State x0 = state_from_omega(q.body, Vec3(0.3, 0.4, 1.1), Vec3(0, 0.6, 0.8));
-  const MethodSettings rkf78{"rkf78", 0.0, 1e-10, 1e-10, std::nullopt};
-  const Outcome compiled = run_method(rkf78, Model(q), x0, 0.0, 5.0);
-  const Outcome direct = run_method(rkf78, q, x0, 0.0, 5.0);
-  return compiled.status == Status::finished && compiled.steps == direct.steps &&
-         compiled.state.m == direct.state.m && compiled.state.gamma == direct.state.gamma;
+/// newtop::newtop: the README's snippet — a run compiled in the library (run.hpp, any Model)
+/// takes the same steps as a stepper of one's own (splitting.hpp, driver.hpp) on the model's field.
+bool readme_snippet() {
+  const Model model(Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3::Zero()),
+                    QuadraticField::from_mu_R(398600.4418, 7000.0));
+  const State x0 = state_from_omega(model.body(), Vec3(0.3, 0.4, 1.1), Vec3(0, 0.6, 0.8));
+  const Outcome out = run_method({"splitting6", 0.01}, model, x0, 0.0, 10.0);
+  SplittingStepper stepper(composition_table("splitting6"));
+  const Outcome same =
+      integrate(stepper, model.quadratic(), x0, 0.0, 10.0, IntegrateOptions{.step = 0.01});
+  return out.status == Status::finished && out.steps == same.steps && out.state.m == same.state.m &&
+         out.state.gamma == same.state.gamma;
+}
+
+/// newtop::newtop: the library refuses a state whose γ is not a unit vector.
+bool refuses_non_unit_gamma() {
+  const Model model(Body::from_principal(Vec3(1, 2, 3), 1.0, Vec3::Zero()), QuadraticField{});
+  try {
+    run_method({"splitting6", 0.01}, model, State{Vec3(0, 0, 1), Vec3(0, 0, 2)}, 0.0, 1.0);
+  } catch (const InputError&) {
+    return true;
+  }
+  return false;
 }
 
 /// newtop::newtop (Boost.Math elliptic functions): the Euler–Poinsot solution keeps |m| and the
@@ -86,7 +99,11 @@ bool tetrahedron_from_obj() {
 
 int main() {
   bool ok = check(integrate_heavy_top(), "newtop::newtop: heavy top, energy conserved");
-  ok = check(compiled_run(), "newtop::newtop: compiled run equals the template") && ok;
+  ok = check(readme_snippet(), "newtop::newtop: README snippet, compiled = template") && ok;
+  ok = check(refuses_non_unit_gamma(), "newtop::newtop: non-unit gamma refused") && ok;
+  ok = check(NEWTOP_VERSION >= 100 && std::string(NEWTOP_VERSION_STRING).size() >= 5,
+             "newtop::newtop: NEWTOP_VERSION") &&
+       ok;
   ok = check(euler_poinsot_solution(), "newtop::newtop: Euler-Poinsot solution") && ok;
   ok = check(parse_scenario_text(), "newtop::io: scenario from TOML text") && ok;
   ok = check(vector_json(), "newtop::io: JSON") && ok;

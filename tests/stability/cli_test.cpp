@@ -106,6 +106,23 @@ TEST(StabilityCli, StabilityJsonForBeletskySpin) {
   EXPECT_EQ(below["lyapunov_stable"], false);
 }
 
+// The summary of a spin about an axis where Beletsky's formula does not apply says what the
+// formula needs and what the axis is (not a list that reads as a description of the axis).
+TEST(StabilityCli, FormulaNotApplicableSaysWhatTheAxisIs) {
+  const CliResult y = newtop("stability " + example("stability_beletsky.toml") + " --axis y");
+  ASSERT_EQ(y.code, 0) << y.out;
+  EXPECT_NE(y.out.find("not applicable: the formula needs the largest-moment axis, r0 = 0 and "
+                       "lambda > 0; y is the middle-moment axis"),
+            std::string::npos)
+      << y.out;
+  const CliResult x = newtop("stability " + example("stability_beletsky.toml") + " --axis x");
+  EXPECT_NE(x.out.find("; x is the least-moment axis"), std::string::npos) << x.out;
+  // The JSON is unchanged: null where the formula does not apply.
+  const auto j = io::Json::parse(
+      newtop("stability " + example("stability_beletsky.toml") + " --axis y --json").out);
+  EXPECT_TRUE(j["threshold_omega_formula"].is_null());
+}
+
 TEST(StabilityCli, ScansWriteCsvDiagrams) {
   const fs::path csv = temp_file("scan.csv");
   const std::string file = example("stability_beletsky.toml");

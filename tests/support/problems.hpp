@@ -5,7 +5,10 @@
 #include <limits>
 #include <random>
 
+#include "newtop/integrate/methods.hpp"
 #include "newtop/newtop.hpp"
+#include "newtop/phase/chaos_run.hpp"
+#include "newtop/phase/section_run.hpp"
 
 namespace newtop::test {
 

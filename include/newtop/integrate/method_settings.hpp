@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "newtop/integrate/composition_tables.hpp"
 
@@ -47,6 +48,17 @@ constexpr std::string_view default_adaptive_method(bool quadratic_field) {
 
 /// What to run: a method by name with its step (fixed-step methods) or tolerances (adaptive).
 struct MethodSettings {
+  MethodSettings() = default;
+  /// `{"splitting6", 0.01}` (a fixed step) or `{"dop853", 0.0, 1e-10, 1e-10}` (tolerances): the
+  /// members in order, the rest at their defaults.
+  MethodSettings(std::string name_, double step_ = 0.0, double abs_tol_ = 1e-12,
+                 double rel_tol_ = 1e-12, std::optional<SplitOrdering> ordering_ = std::nullopt)
+      : name(std::move(name_)),
+        step(step_),
+        abs_tol(abs_tol_),
+        rel_tol(rel_tol_),
+        ordering(std::move(ordering_)) {}
+
   std::string name{kDefaultFixedMethod};
   double step = 0.0;
   double abs_tol = 1e-12;

@@ -1,0 +1,177 @@
+"""The analyses on Python objects (newtop.analyses): a body, a field and a state built in code give
+the same numbers, bit for bit, as the newtop program on the equivalent scenario file — equilibria,
+the stability of equilibrium 1, a Poincaré section of 200 crossings, MEGNO and lambda_max, and the
+analytic solution of a heavy top at 5 times — without the Python side writing a file; the library's
+check of gamma, integrate's t_eval and model.rhs as an array.
+
+Run by ctest with NEWTOP_PYTHON_MODULE (build/python) and NEWTOP_EXE set
+(tests/python/CMakeLists.txt)."""
+
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+sys.path.insert(0, os.environ["NEWTOP_PYTHON_MODULE"])
+import newtop  # noqa: E402
+
+EXE = os.environ["NEWTOP_EXE"]
+
+INERTIA = [1.0, 1.5, 2.2]
+R0 = [0.1, 0.05, 0.2]
+G, LAMBDA = 1.0, 0.7
+OMEGA0 = [0.3, -0.2, 0.9]
+GAMMA0 = [0.0, 0.6, 0.8]
+
+
+def body_field_state():
+    body = newtop.Body.from_principal(INERTIA, mass=1.0, center_of_mass=R0)
+    model = newtop.Model(body, newtop.QuadraticField.coulomb(G, LAMBDA))
+    return model, newtop.State.from_omega(body, OMEGA0, GAMMA0)
+
+
+def vec(v):
+    return "[" + ", ".join(repr(float(x)) for x in v) + "]"
+
+
+def scenario_file(tmp_path, inertia=INERTIA, r0=R0, g=G, lam=LAMBDA, omega=OMEGA0, gamma=GAMMA0):
+    """The same body, field and state as a scenario file, for the program."""
+    path = tmp_path / "scenario.toml"
+    path.write_text("[body]\ninertia = %s\nmass = 1.0\ncenter_of_mass = %s\n"
+                    "[field]\ng = %r\nlambda = %r\n[initial]\nomega = %s\ngamma = %s\n"
+                    % (vec(inertia), vec(r0), float(g), float(lam), vec(omega), vec(gamma)))
+    return str(path)
+
+
+def program_json(*words):
+    p = subprocess.run([EXE, *words, "--json"], capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    return json.loads(p.stdout)
+
+
+def test_equilibria_equal_the_program(tmp_path):
+    model, _ = body_field_state()
+    eq = newtop.equilibria(model)
+    j = program_json("equilibria", scenario_file(tmp_path))
+    assert isinstance(eq, newtop.Equilibria) and eq.count == j["count"] > 0
+    assert eq.gamma.shape == (eq.count, 3)
+    assert np.array_equal(eq.gamma, [e["gamma"] for e in j["equilibria"]])
+    assert np.array_equal(eq.kappa, [e["kappa"] for e in j["equilibria"]])
+    assert np.array_equal(eq.potential, [e["potential"] for e in j["equilibria"]])
+    assert np.array_equal(eq.hessian_eigenvalues, [e["hessian_eigenvalues"] for e in j["equilibria"]])
+    assert eq.type == [e["type"] for e in j["equilibria"]]
+    assert (eq.minima, eq.saddles, eq.maxima) == (j["minima"], j["saddles"], j["maxima"])
+
+
+def test_stability_of_equilibrium_1_equals_the_program(tmp_path):
+    model, _ = body_field_state()
+    r = newtop.stability(model, equilibrium=1)
+    j = program_json("stability", scenario_file(tmp_path), "--equilibrium", "1")
+    assert np.array_equal(r.eigenvalues.real, [z[0] for z in j["eigenvalues"]])
+    assert np.array_equal(r.eigenvalues.imag, [z[1] for z in j["eigenvalues"]])
+    assert r.max_real_part == j["max_real_part"]
+    assert r.linearly_stable == j["linearly_stable"] and r.lyapunov_stable == j["lyapunov_stable"]
+    assert np.array_equal(r.gamma, j["gamma"]) and r.residual == j["residual"]
+
+
+def test_stability_of_an_axis_equals_the_program(tmp_path):
+    body = newtop.Body.from_principal([1.0, 1.5, 2.2], mass=1.0)
+    model = newtop.Model(body, newtop.QuadraticField.coulomb(1.0, 0.7))
+    r = newtop.stability(model, axis="z", omega=1.3)
+    j = program_json("stability", scenario_file(tmp_path, r0=[0, 0, 0]), "--axis", "z",
+                     "--omega", "1.3")
+    assert r.axis == j["axis"] == "z"
+    assert r.threshold_omega_formula == j["threshold_omega_formula"]
+    assert r.threshold_omega_numeric == j["threshold_omega_numeric"]
+    assert np.array_equal(r.eigenvalues.real, [z[0] for z in j["eigenvalues"]])
+
+
+def test_section_of_200_crossings_equals_the_program(tmp_path):
+    model, x0 = body_field_state()
+    s = newtop.section(model, [x0], 1e4, surface="gamma1 = 0", crossings=200, step=0.01)
+    j = program_json("section", scenario_file(tmp_path), "--surface", "gamma1 = 0",
+                     "--crossings", "200", "--t-end", "1e4", "--step", "0.01")
+    assert s.count == j["count"] == 200
+    assert s.t.shape == (200,) and s.gamma.shape == (200, 3)
+    assert np.array_equal(s.t, [c["t"] for c in j["crossings"]])
+    assert np.array_equal(s.gamma, [c["gamma"] for c in j["crossings"]])
+    assert np.array_equal(s.omega, [c["omega"] for c in j["crossings"]])
+    assert np.array_equal(s.m, [c["m"] for c in j["crossings"]])
+
+
+def test_chaos_equals_the_program(tmp_path):
+    model, x0 = body_field_state()
+    c = newtop.chaos(model, x0, 200.0, step=0.01, spectrum=True)
+    j = program_json("chaos", scenario_file(tmp_path), "--t-end", "200", "--step", "0.01",
+                     "--spectrum")
+    assert c.lyapunov_max == j["lyapunov_max"] and c.megno == j["megno"] and c.fli == j["fli"]
+    assert np.array_equal(c.spectrum, j["spectrum"]) and c.outcome == j["outcome"]
+
+
+def test_analytic_heavy_top_at_5_times_equals_the_program(tmp_path):
+    # A heavy symmetric top (A = B, centre of mass on the axis, uniform gravity): Lagrange's case.
+    body = newtop.Body.from_principal([2.0, 2.0, 1.0], mass=1.0, center_of_mass=[0, 0, 0.5])
+    model = newtop.Model(body, newtop.QuadraticField.uniform(9.81))
+    x0 = newtop.State.from_omega(body, [0.3, 0.0, 20.0], [0.6, 0.0, 0.8])
+    times = [0.5, 1.0, 1.5, 2.0, 2.5]
+    a = newtop.analytic(model, x0, times)
+    j = program_json("analytic", scenario_file(tmp_path, inertia=[2.0, 2.0, 1.0], r0=[0, 0, 0.5],
+                                               g=9.81, lam=0.0, omega=[0.3, 0.0, 20.0],
+                                               gamma=[0.6, 0.0, 0.8]),
+                     "--times", "0.5,1,1.5,2,2.5")
+    assert a.case == j["case"] == "lagrange"
+    assert np.array_equal(a.t, times)
+    assert np.array_equal(a.omega, [s["analytic"]["omega"] for s in j["samples"]])
+    assert np.array_equal(a.gamma, [s["analytic"]["gamma"] for s in j["samples"]])
+    assert np.array_equal(a.numeric_gamma, [s["numeric"]["gamma"] for s in j["samples"]])
+    assert a.max_abs_error == j["max_abs_error"]
+
+
+def test_a_scenario_built_in_code_is_accepted_where_a_model_is(tmp_path):
+    model, x0 = body_field_state()
+    sc = newtop.Scenario(model, x0, t_end=200.0, step=0.01)
+    sc.t_end = 100.0  # editable
+    assert newtop.chaos(sc).megno == newtop.chaos(model, x0, 100.0, step=0.01).megno
+    assert np.array_equal(newtop.equilibria(sc).gamma, newtop.equilibria(model).gamma)
+
+
+def test_a_non_unit_gamma_is_refused_as_on_the_command_line(tmp_path):
+    body = newtop.Body.from_principal(INERTIA, mass=1.0, center_of_mass=R0)
+    with pytest.raises(newtop.InputError, match=r"gamma: expected a unit vector \(\|gamma\| = 1 to "
+                                                r"1e-12\), found \|gamma\| = 1\.08"):
+        newtop.State.from_omega(body, OMEGA0, [0.0, 0.6, 0.9])
+    p = subprocess.run([EXE, "simulate", scenario_file(tmp_path, gamma=[0.0, 0.6, 0.9]),
+                        "--t-end", "1", "--step", "0.1"], capture_output=True, text=True)
+    assert p.returncode == 2
+    assert "gamma: expected a unit vector (|gamma| = 1 to 1e-12), found |gamma| = 1.08" in p.stderr
+    x = newtop.State.from_omega(body, OMEGA0, [0.0, 0.6, 0.9], normalize=True)
+    assert abs(np.linalg.norm(x.gamma) - 1.0) < 1e-15
+    with pytest.raises(newtop.InputError, match="m: expected finite numbers"):
+        newtop.State([np.nan, 0, 0], [0, 0, 1])
+
+
+def test_integrate_t_eval_is_the_dense_output_of_simulate_times(tmp_path):
+    model, x0 = body_field_state()
+    times = [0.25, 1.0, 3.5, 7.0]
+    run = newtop.integrate(model, x0, 10.0, tol=1e-10, t_eval=times)
+    assert np.array_equal(run["t"], times) and run["gamma"].shape == (4, 3)
+    out = tmp_path / "run.csv"
+    p = subprocess.run([EXE, "simulate", scenario_file(tmp_path), "--t-end", "10", "--tol",
+                        "1e-10", "--times", "0.25,1,3.5,7", "--out", str(out)],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    rows = np.loadtxt(out, delimiter=",", skiprows=1, ndmin=2)
+    assert np.array_equal(rows[:, 0], times)
+    assert np.array_equal(rows[:, 4:7], run["gamma"])
+
+
+def test_rhs_is_an_array():
+    model, x0 = body_field_state()
+    d = model.rhs(x0)
+    assert d.shape == (6,)
+    assert np.array_equal(d, model.rhs(np.concatenate([x0.m, x0.gamma])))
+    # dgamma/dt = gamma x omega
+    assert np.allclose(d[3:], np.cross(x0.gamma, x0.omega(model.body)), rtol=0, atol=1e-15)
