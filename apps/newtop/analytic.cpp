@@ -7,6 +7,7 @@
 #include "newtop/analysis/analytic.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -50,7 +51,7 @@ std::optional<double> solution_period(const AnalyticSolution& sol) {
         using S = std::decay_t<decltype(s)>;
         if constexpr (std::is_same_v<S, LagrangeCase>) {
           return s.nutation_period;
-        } else if constexpr (std::is_same_v<S, BrunCase>) {
+        } else if constexpr (std::is_same_v<S, BrunCase> || std::is_same_v<S, BrunPrymSolution>) {
           return std::numeric_limits<double>::quiet_NaN();
         } else {
           return s.period;
@@ -121,6 +122,8 @@ void add_case_details(io::Json& j, const AnalyticSolution& sol, const std::vecto
     j["gamma3"] = g;
   } else if (const auto* b = std::get_if<BrunCase>(&sol)) {
     add_brun_details(j, *b, times);
+  } else if (const auto* bp = std::get_if<BrunPrymSolution>(&sol)) {
+    add_brun_prym_details(j, *bp);
   }
 }
 
@@ -132,6 +135,7 @@ struct Comparison {
   std::optional<double> max_err;
   Outcome reference;
   std::int64_t compared = 0;
+  double seconds_per_sample = 0;  ///< wall time of one analytic state, averaged
 };
 
 Comparison compare(const io::Scenario& sc, const AnalyticSolution& sol,
@@ -147,7 +151,11 @@ Comparison compare(const io::Scenario& sc, const AnalyticSolution& sol,
                                    OutputTimes::list(times, 0.0, times.back()), opt,
                                    [&](std::int64_t k, double, const State& x) { numeric[k] = x; });
   for (std::size_t k = 0; k < times.size(); ++k) {
+    const auto start = std::chrono::steady_clock::now();
     const State an = analytic_state(sol, times[k]);
+    c.seconds_per_sample += std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+                                .count() /
+                            static_cast<double>(times.size());
     io::Json s{{"t", times[k]}, {"analytic", state_json(b, an)}, {"numeric", nullptr}};
     if (const auto& x = numeric[k]) {
       const double err = std::max((omega(b, an) - omega(b, *x)).cwiseAbs().maxCoeff(),
@@ -172,6 +180,7 @@ void print_summary(const io::Scenario& sc, const AnalyticDetection& det, const i
       std::cout << "  " << key << " = " << j[key].dump() << "\n";
     }
   }
+  if (j.contains("prym")) print_brun_prym(j["prym"]);
   if (n_times == 0) {
     std::cout << "samples   none: no time span (no t_end, and the solution has no period); give "
                  "--t-end or --times to compare with a numerical run\n";
@@ -185,6 +194,7 @@ void print_summary(const io::Scenario& sc, const AnalyticDetection& det, const i
               << " steps; " << n_times - static_cast<std::size_t>(c.compared)
               << " samples after it are not compared\n";
   }
+  std::cout << "analytic  " << format_number(c.seconds_per_sample) << " s per sample\n";
   std::cout << "max |analytic - numeric| (omega, gamma) = "
             << (c.max_err ? format_number(*c.max_err) : std::string("none compared")) << "\n";
 }
@@ -202,16 +212,6 @@ int run(const AnalyticArgs& a) {
     j["max_abs_error"] = nullptr;
     if (det.kind == AnalyticKind::brun) {
       j["spectral_curve"] = brun_spectral_json(sc.model.quadratic(), sc.initial);
-      std::string source;
-      const std::vector<double> times = sample_times(a, sc, std::nullopt, source);
-      j["span_source"] = source;
-      j["prym"] = brun_prym_json(sc.model.quadratic(), sc.initial, times);
-      // The torus frequencies at the top level, as on f = 0.
-      if (!j["prym"].is_null() && j["prym"]["torus"].contains("frequencies")) {
-        for (const char* key :
-             {"frequencies", "periods", "rotation_number", "resonant", "resonance"})
-          j[key] = j["prym"]["torus"][key];
-      }
     }
     if (a.json) {
       j["field"] = field_json(sc.model);
@@ -219,7 +219,6 @@ int run(const AnalyticArgs& a) {
     } else {
       std::cout << "newtop analytic " << sc.source << "\ncase      " << to_string(det.kind)
                 << "\n          " << det.reason << "\n";
-      if (j.contains("prym")) print_brun_prym(j["prym"]);
     }
     return kExitOk;
   }
@@ -231,6 +230,7 @@ int run(const AnalyticArgs& a) {
   j["span_source"] = source;
   j["samples"] = c.samples;
   j["max_abs_error"] = c.max_err ? io::Json(*c.max_err) : io::Json(nullptr);
+  j["seconds_per_sample"] = times.empty() ? io::Json(nullptr) : io::Json(c.seconds_per_sample);
   const bool failed = !times.empty() && c.reference.status != Status::finished;
   if (!times.empty()) {
     j["reference"] = {{"method", "rkf78"},

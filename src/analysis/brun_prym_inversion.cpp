@@ -8,6 +8,7 @@
 
 #include "newtop/analysis/brun_level.hpp"
 #include "newtop/core/types.hpp"
+#include "newtop/model/integrals.hpp"
 
 namespace newtop {
 namespace {
@@ -21,13 +22,18 @@ using Line = Eigen::Vector3cd;
 // segment, the nearest singularity is ≥ 8 half-lengths away: Bernstein ellipse ρ ≈ 16, error
 // ~ρ^(−24), far below round-off.
 constexpr int kNodes = 12;
-constexpr double kMove = 0.25;
+constexpr double kMove = 0.5;
 // Table nodes per side of the torus cell (a query starts at most 1/16 of a cell away).
 constexpr int kGrid = 8;
 // Newton's method: at most this many corrections; the residual of the sums (O(1) in size) is
 // accepted at kAccept (round-off of the quadrature is ~1e-15).
 constexpr int kNewton = 8;
 constexpr double kAccept = 1e-10;
+// Gauss–Newton corrections of the state (quadratic convergence from brun_prym_state's).
+constexpr int kPolish = 3;
+// Central differences of the residual of polish: exact for its linear and quadratic terms up to
+// round-off ε/kDiff.
+constexpr double kDiff = 1e-5;
 // A step is given up below this fraction of the move asked for.
 constexpr double kMinStep = 1e-10;
 // The state after a step lies within this fraction of the first-order move of the flows from
@@ -102,12 +108,51 @@ Chord chord(const Context& c, const Line& La, const BrunPrymDivisor& da, const L
   for (int i = 0; i < half; ++i) {
     if (!visit(0.5 * (1 + x[i]), 0.5 * w[i])) return out;
   }
-  out.ok = follow(c, Lb, out.end);
+  if (!follow(c, Lb, out.end)) return out;
+  // The whole segment, not only node to node, within kMove of each point's clearance at both
+  // ends: the quadrature's error bound above.
+  for (int j = 0; j < 3; ++j) {
+    const double move = std::abs(out.end[j].u - da[j].u);
+    if (!(move <= kMove * std::min(clearance(c, da, j), clearance(c, out.end, j)))) return out;
+  }
+  out.ok = true;
   return out;
 }
 
 double distance(const State& a, const State& b) {
   return std::max((a.m - b.m).cwiseAbs().maxCoeff(), (a.gamma - b.gamma).cwiseAbs().maxCoeff());
+}
+
+/// The state x of the level (|γ| = 1, m·γ = f, energy h, Brun's integral c) whose line is
+/// proportional to L, by Gauss–Newton from brun_prym_state's: that map alone takes a square root
+/// where the two real directions through the points meet (a fold), which the level's h and c
+/// resolve.
+State polish(const Context& c, const Line& L, State x) {
+  using Y = Eigen::Matrix<double, 8, 1>;
+  using R = Eigen::Matrix<double, 10, 1>;
+  const Line l = L / L.norm();
+  Complex mu = vec(brun_prym_line(c.k, x)).dot(l);  // conj(l)·line: the scale
+  auto residual = [&](const Y& y) {
+    const State s{y.head<3>(), y.segment<3>(3)};
+    const Line d = vec(brun_prym_line(c.k, s)) - Complex(y[6], y[7]) * l;
+    R r;
+    r << d[0].real(), d[0].imag(), d[1].real(), d[1].imag(), d[2].real(), d[2].imag(),
+        s.gamma.squaredNorm() - 1, s.m.dot(s.gamma) - c.k.f, energy(c.model, s) - c.k.h,
+        brun(c.model, s) - c.k.c;
+    return r;
+  };
+  Y y;
+  y << x.m, x.gamma, mu.real(), mu.imag();
+  for (int it = 0; it < kPolish; ++it) {
+    Eigen::Matrix<double, 10, 8> J;
+    for (int i = 0; i < 8; ++i) {
+      Y a = y, b = y;
+      a[i] += kDiff, b[i] -= kDiff;
+      J.col(i) = (residual(a) - residual(b)) / (2 * kDiff);
+    }
+    y -= J.colPivHouseholderQr().solve(residual(y));
+  }
+  return {y.head<3>(), y.segment<3>(3)};
 }
 
 struct Move {
@@ -154,7 +199,7 @@ Move step(const Context& c, const BrunPrymNode& a, const Eigen::Vector2d& dtau) 
   L = best;
   State x;
   try {
-    x = brun_prym_state(c.k, ch.end);
+    x = polish(c, L, brun_prym_state(c.k, ch.end));
   } catch (const InputError&) {
     return out;  // no real state of the level carries it: a wrong sheet
   }
