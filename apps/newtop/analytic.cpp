@@ -153,9 +153,9 @@ Comparison compare(const io::Scenario& sc, const AnalyticSolution& sol,
   for (std::size_t k = 0; k < times.size(); ++k) {
     const auto start = std::chrono::steady_clock::now();
     const State an = analytic_state(sol, times[k]);
-    c.seconds_per_sample += std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-                                .count() /
-                            static_cast<double>(times.size());
+    c.seconds_per_sample +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+        static_cast<double>(times.size());
     io::Json s{{"t", times[k]}, {"analytic", state_json(b, an)}, {"numeric", nullptr}};
     if (const auto& x = numeric[k]) {
       const double err = std::max((omega(b, an) - omega(b, *x)).cwiseAbs().maxCoeff(),

@@ -42,7 +42,8 @@ AnalyticDetection detect_analytic_case(const QuadraticModel& model, const State&
     try {
       brun_level(model, x0);
     } catch (const InputError& e) {
-      return {AnalyticKind::brun, std::string("Brun's case (r0 = 0, k = 0), unsolved: ") + e.what()};
+      return {AnalyticKind::brun,
+              std::string("Brun's case (r0 = 0, k = 0), unsolved: ") + e.what()};
     }
     return {AnalyticKind::brun,
             "Brun's case (r0 = 0, k = 0) on a level f != 0 (f = m.gamma): the motion is linear on "

@@ -46,8 +46,8 @@ TEST(BrunCli, ReportsCurveRangesFrequenciesAndAgreement) {
 }
 
 TEST(BrunCli, NonzeroAreaIsSolvedByTheAbelPrymInversion) {
-  const CliResult r = run_newtop("analytic " + newtop::test::example_path("brun.toml") +
-                                 " --samples 6 --json");
+  const CliResult r =
+      run_newtop("analytic " + newtop::test::example_path("brun.toml") + " --samples 6 --json");
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["case"], "brun");

@@ -61,12 +61,12 @@ BrunPrymSolution brun_prym_solution(const QuadraticModel& model, const State& x0
 
 /// The state at time t with the data of the inversion.
 struct BrunPrymStateAt {
-  State state;                    ///< body frame
-  BrunPrymDivisor divisor{};      ///< its divisor on Γ
-  std::array<double, 2> cell{};   ///< θ: the torus coordinates of t in the cell, [−½, ½)²
-  std::array<double, 2> tau{};    ///< T θ: the reduced flow times (τ_H, τ_c)
-  double residual = 0;            ///< |S(D) − law| left by Newton's method in the last step
-  int steps = 0;                  ///< continuation steps from the nearest table node
+  State state;                   ///< body frame
+  BrunPrymDivisor divisor{};     ///< its divisor on Γ
+  std::array<double, 2> cell{};  ///< θ: the torus coordinates of t in the cell, [−½, ½)²
+  std::array<double, 2> tau{};   ///< T θ: the reduced flow times (τ_H, τ_c)
+  double residual = 0;           ///< |S(D) − law| left by Newton's method in the last step
+  int steps = 0;                 ///< continuation steps from the nearest table node
 };
 BrunPrymStateAt brun_prym_state_at(const BrunPrymSolution& s, double t);
 
