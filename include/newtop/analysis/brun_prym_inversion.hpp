@@ -15,7 +15,7 @@
 ///     line A u + B + √λ C v (two complex unknowns: the line up to scale) and the difference of
 ///     the sums is the integral of brun_prym_line_rate along the straight segment of lines from
 ///     the node's (12-point Gauss–Legendre), the ξ_j continued from node to node. Long moves are
-///     split into steps in τ, each short enough that no point moves by more than a quarter of
+///     split into steps in τ, each short enough that no point moves by more than half of
 ///     its distance to another point or to a branch point of Γ (so that the continuation of the
 ///     points and of ξ is unambiguous and the quadrature converged) — a continuation along the
 ///     real torus, which chooses between the two divisors of one Abel image (the map from the
