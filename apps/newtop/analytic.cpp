@@ -113,6 +113,8 @@ void add_case_details(io::Json& j, const AnalyticSolution& sol, const std::vecto
     j["euler_angles"] = euler;
   } else if (const auto* b = std::get_if<BrunCase>(&sol)) {
     add_brun_details(j, *b, times);
+  } else if (const auto* bp = std::get_if<BrunPrymSolution>(&sol)) {
+    add_brun_prym_details(j, *bp);
   }
 }
 
@@ -123,6 +125,7 @@ struct Comparison {
   std::optional<double> max_err;
   Outcome reference;
   std::int64_t compared = 0;
+  double seconds_per_sample = 0;  ///< wall time of one analytic state, averaged
 };
 
 Comparison compare(const io::Scenario& sc, const AnalyticSolution& sol,
@@ -130,7 +133,7 @@ Comparison compare(const io::Scenario& sc, const AnalyticSolution& sol,
   IntegrateOptions opt;
   if (sc.integrate.max_steps) opt.max_steps = *sc.integrate.max_steps;
   const AnalyticComparison r = compare_analytic(sc.model.quadratic(), sc.initial, sol, times, opt);
-  Comparison c{io::Json::array(), r.max_abs_error, r.reference, r.compared};
+  Comparison c{io::Json::array(), r.max_abs_error, r.reference, r.compared, r.seconds_per_sample};
   const Body& b = sc.model.body();
   for (std::size_t k = 0; k < r.times.size(); ++k) {
     io::Json s{{"t", r.times[k]}, {"analytic", state_json(b, r.analytic[k])}, {"numeric", nullptr}};
@@ -151,6 +154,7 @@ void print_summary(const io::Scenario& sc, const AnalyticDetection& det, const i
       std::cout << "  " << key << " = " << j[key].dump() << "\n";
     }
   }
+  if (j.contains("prym")) print_brun_prym(without_negative_zeros(j["prym"]));
   if (n_times == 0) {
     std::cout << "samples   none: no time span (no t_end, and the solution has no period); give "
                  "--t-end or --times to compare with a numerical run\n";
@@ -164,6 +168,7 @@ void print_summary(const io::Scenario& sc, const AnalyticDetection& det, const i
               << " steps; " << n_times - static_cast<std::size_t>(c.compared)
               << " samples after it are not compared\n";
   }
+  std::cout << "analytic  " << format_number(c.seconds_per_sample) << " s per sample\n";
   std::cout << "max |analytic - numeric| (omega, gamma) = "
             << (c.max_err ? format_number(*c.max_err) : std::string("none compared")) << "\n";
 }
@@ -181,16 +186,6 @@ int run(const AnalyticArgs& a) {
     j["max_abs_error"] = nullptr;
     if (det.kind == AnalyticKind::brun) {
       j["spectral_curve"] = brun_spectral_json(sc.model.quadratic(), sc.initial);
-      std::string source;
-      const std::vector<double> times = sample_times(a, sc, std::nullopt, source);
-      j["span_source"] = source;
-      j["prym"] = brun_prym_json(sc.model.quadratic(), sc.initial, times);
-      // The torus frequencies at the top level, as on f = 0.
-      if (!j["prym"].is_null() && j["prym"]["torus"].contains("frequencies")) {
-        for (const char* key :
-             {"frequencies", "periods", "rotation_number", "resonant", "resonance"})
-          j[key] = j["prym"]["torus"][key];
-      }
     }
     if (a.json) {
       j["field"] = field_json(sc.model);
@@ -198,7 +193,6 @@ int run(const AnalyticArgs& a) {
     } else {
       std::cout << "newtop analytic " << sc.source << "\ncase      " << to_string(det.kind)
                 << "\n          " << det.reason << "\n";
-      if (j.contains("prym")) print_brun_prym(without_negative_zeros(j["prym"]));
     }
     return kExitOk;
   }
@@ -210,6 +204,7 @@ int run(const AnalyticArgs& a) {
   j["span_source"] = source;
   j["samples"] = c.samples;
   j["max_abs_error"] = c.max_err ? io::Json(*c.max_err) : io::Json(nullptr);
+  j["seconds_per_sample"] = times.empty() ? io::Json(nullptr) : io::Json(c.seconds_per_sample);
   const bool failed = !times.empty() && c.reference.status != Status::finished;
   if (!times.empty()) {
     j["reference"] = {{"method", "rkf78"},

@@ -68,14 +68,9 @@ io::Json brun_spectral_json(const QuadraticModel& model, const State& x0) {
   return j;
 }
 
-io::Json brun_prym_json(const QuadraticModel& model, const State& x0,
-                        const std::vector<double>& times) {
-  BrunCurve k;
-  try {
-    k = brun_level(model, x0);
-  } catch (const InputError&) {
-    return nullptr;
-  }
+void add_brun_prym_details(io::Json& j, const BrunPrymSolution& s) {
+  const BrunCurve& k = s.curve;
+  const State& x0 = s.initial;
   const BrunPrymDivisor d = brun_prym_divisor(k, x0);
   io::Json points = io::Json::array();
   for (const BrunPrymPoint& p : d) {
@@ -85,44 +80,33 @@ io::Json brun_prym_json(const QuadraticModel& model, const State& x0,
   const State back = brun_prym_state(k, d);
   const double round_trip = std::max((back.m - x0.m).cwiseAbs().maxCoeff(),
                                      (back.gamma - x0.gamma).cwiseAbs().maxCoeff());
-  const BrunPrymRate rate = brun_prym_rate(k, x0, rhs(model, x0));
-  const std::complex<double> velocity(0.0, -2.0 / k.kappa);
-  io::Json sums = io::Json::array();
-  double max_err = 0;
-  const auto along = brun_prym_sums_along(model, x0, times);
-  for (std::size_t i = 0; i < times.size(); ++i) {
-    const std::complex<double> linear = velocity * times[i];
-    max_err = std::max({max_err, std::abs(along[i][0] - linear), std::abs(along[i][1])});
-    sums.push_back({{"t", times[i]},
-                    {"sum", {complex_json(along[i][0]), complex_json(along[i][1])}},
-                    {"linear", {complex_json(linear), complex_json(0.0)}}});
+  const BrunPrymRate rate = brun_prym_rate(k, x0, rhs(s.model, x0));
+  const BrunPrymFrequencies& fr = s.torus;
+  const auto& w = fr.frequency;
+  const io::Json resonance = fr.resonance ? io::Json{{"p", fr.resonance->p},
+                                                     {"q", fr.resonance->q},
+                                                     {"defect", fr.resonance->defect}}
+                                          : io::Json(nullptr);
+  const io::Json torus = {
+      {"frequencies", w},
+      {"periods", {2 * std::numbers::pi / std::abs(w[0]), 2 * std::numbers::pi / std::abs(w[1])}},
+      {"rotation_number", w[0] / w[1]},
+      {"resonant", fr.resonance.has_value()},
+      {"resonance", resonance},
+      {"torus_periods", fr.torus_period},
+      {"torus_index", fr.index},
+      {"velocity_c", {complex_json(fr.velocity_c[0]), complex_json(fr.velocity_c[1])}}};
+  j["curve"] = level_json(k);
+  j["spectral_curve"] = brun_spectral_json(s.model, x0);
+  j["prym"] = {{"divisor", points},
+               {"torus", torus},
+               {"round_trip_error", round_trip},
+               {"velocity", {complex_json(s.velocity_h[0]), complex_json(s.velocity_h[1])}},
+               {"rate_at_start", {complex_json(rate.rate[0]), complex_json(rate.rate[1])}},
+               {"table_nodes", s.table.size()}};
+  for (const char* key : {"frequencies", "periods", "rotation_number", "resonant", "resonance"}) {
+    j[key] = torus[key];
   }
-  io::Json torus = nullptr;
-  try {
-    const BrunPrymFrequencies fr = brun_prym_frequencies(model, x0);
-    const auto& w = fr.frequency;
-    torus = {
-        {"frequencies", w},
-        {"periods", {2 * std::numbers::pi / std::abs(w[0]), 2 * std::numbers::pi / std::abs(w[1])}},
-        {"rotation_number", w[0] / w[1]},
-        {"resonant", fr.resonance.has_value()},
-        {"resonance", fr.resonance ? io::Json{{"p", fr.resonance->p},
-                                              {"q", fr.resonance->q},
-                                              {"defect", fr.resonance->defect}}
-                                   : io::Json(nullptr)},
-        {"torus_periods", fr.torus_period},
-        {"torus_index", fr.index},
-        {"velocity_c", {complex_json(fr.velocity_c[0]), complex_json(fr.velocity_c[1])}}};
-  } catch (const InputError& e) {
-    torus = {{"error", e.what()}};
-  }
-  return {{"divisor", points},
-          {"torus", torus},
-          {"round_trip_error", round_trip},
-          {"velocity", {complex_json(velocity), complex_json(0.0)}},
-          {"rate_at_start", {complex_json(rate.rate[0]), complex_json(rate.rate[1])}},
-          {"sums", sums},
-          {"max_abs_error", times.empty() ? io::Json(nullptr) : io::Json(max_err)}};
 }
 
 void print_brun_prym(const io::Json& prym) {
@@ -133,22 +117,9 @@ void print_brun_prym(const io::Json& prym) {
   std::cout << "  state -> points -> state: error " << format_number(prym["round_trip_error"])
             << "\n  rates of the Abel-Prym sums at the start " << prym["rate_at_start"].dump()
             << " (law " << prym["velocity"].dump() << ")\n";
-  if (prym["max_abs_error"].is_null()) {
-    std::cout << "  sums along the motion: no time span (give --t-end or --times)\n";
-  } else {
-    std::cout << "  sums along the motion at " << prym["sums"].size()
-              << " times: max |sum - linear law| = " << format_number(prym["max_abs_error"])
-              << "\n";
-  }
-  const io::Json& torus = prym["torus"];
-  if (torus.contains("frequencies")) {
-    std::cout << "  frequencies = " << torus["frequencies"].dump()
-              << " (rad per unit time; rotation number " << format_number(torus["rotation_number"])
-              << (torus["resonant"].get<bool>() ? ", resonant" : "") << ")\n";
-  } else {
-    std::cout << "  frequencies: " << torus["error"].get<std::string>() << "\n";
-  }
-  std::cout << "  (the inversion to the state at time t is not implemented)\n";
+  std::cout << "  the state at time t: t reduced modulo the torus periods "
+            << prym["torus"]["torus_periods"].dump() << ", the Abel-Prym map inverted from "
+            << prym["table_nodes"].dump() << " nodes over one cell\n";
 }
 
 }  // namespace newtop::app

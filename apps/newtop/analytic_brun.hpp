@@ -1,10 +1,11 @@
 #pragma once
 // newtop analytic on Brun's case: the JSON of the level f = 0 solution, of the spectral curve on
-// any level, and of the Prym divisor with its Abel-Prym sums along the numerical motion.
+// any level, and of the Prym divisor and torus of the solution on f != 0.
 
 #include <vector>
 
 #include "newtop/analysis/brun_case.hpp"
+#include "newtop/analysis/brun_prym_inversion.hpp"
 #include "newtop/io/json.hpp"
 
 namespace newtop::app {
@@ -16,13 +17,13 @@ void add_brun_details(io::Json& j, const BrunCase& b, const std::vector<double>&
 /// The spectral curve of the level, v² = P(u), ξ² = N(u) + 2√λ f v (null without one).
 io::Json brun_spectral_json(const QuadraticModel& model, const State& x0);
 
-/// The Prym divisor of the start (brun_prym.hpp), the round trip state → divisor → state, the
-/// rates of the Abel-Prym sums at the start, and the sums along the numerical motion at the sample
-/// times against the linear law (−2i t/κ, 0); null without a level (equal moments).
-io::Json brun_prym_json(const QuadraticModel& model, const State& x0,
-                        const std::vector<double>& times);
+/// Brun's case on f ≠ 0 (brun_prym_inversion.hpp): `"prym"` with the divisor of the start, the
+/// round trip state → divisor → state, the rates of the Abel-Prym sums at the start against the
+/// law (−2i/κ, 0), the torus lattice and frequencies and the table of the inversion; the
+/// frequencies also at the top level, as on f = 0.
+void add_brun_prym_details(io::Json& j, const BrunPrymSolution& s);
 
-/// The human summary of brun_prym_json.
+/// The human summary of the "prym" of add_brun_prym_details.
 void print_brun_prym(const io::Json& prym);
 
 }  // namespace newtop::app

@@ -1,5 +1,6 @@
 #include "newtop/analysis/analytic.hpp"
 
+#include "newtop/analysis/brun_level.hpp"
 #include "newtop/model/integrals.hpp"
 
 namespace newtop {
@@ -38,12 +39,17 @@ AnalyticDetection detect_analytic_case(const QuadraticModel& model, const State&
               "separation (Weber, Kharlamova), genus-2 Abel-Jacobi inversion",
               true};
     }
-    return {
-        AnalyticKind::brun,
-        "Brun's case (r0 = 0, k = 0) on a level f != 0 (f = m.gamma): the motion is linear on the "
-        "Prym variety of the spectral curve (its three points, the Abel-Prym sums along the "
-        "numerical motion and the torus frequencies are reported); the inversion to the "
-        "state at time t is not implemented"};
+    try {
+      brun_level(model, x0);
+    } catch (const InputError& e) {
+      return {AnalyticKind::brun,
+              std::string("Brun's case (r0 = 0, k = 0), unsolved: ") + e.what()};
+    }
+    return {AnalyticKind::brun,
+            "Brun's case (r0 = 0, k = 0) on a level f != 0 (f = m.gamma): the motion is linear on "
+            "the Prym variety of the spectral curve; the state at time t by inverting the "
+            "Abel-Prym map (t reduced modulo the torus lattice)",
+            true};
   }
   return {AnalyticKind::none,
           "no integrable case: not a free body (lambda or M g r0 nonzero), not a plane motion (" +
@@ -62,7 +68,8 @@ AnalyticSolution analytic_solution(const QuadraticModel& model, const State& x0,
     case AnalyticKind::lagrange:
       return lagrange_case(model, x0);
     case AnalyticKind::brun:
-      return brun_case(model, x0);
+      if (brun_level_solvable(model, x0)) return brun_case(model, x0);
+      return brun_prym_solution(model, x0);
     case AnalyticKind::none:
       break;
   }
@@ -76,6 +83,7 @@ State analytic_state(const AnalyticSolution& s, double t) {
     State operator()(const Pendulum& p) const { return pendulum_state(p, t); }
     State operator()(const LagrangeCase& l) const { return lagrange_state(l, t); }
     State operator()(const BrunCase& b) const { return brun_state(b, t); }
+    State operator()(const BrunPrymSolution& b) const { return brun_prym_state_at(b, t).state; }
   };
   return std::visit(Visitor{t}, s);
 }

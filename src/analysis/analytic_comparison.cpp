@@ -1,6 +1,7 @@
 #include "newtop/analysis/analytic_comparison.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -17,7 +18,7 @@ std::optional<double> solution_period(const AnalyticSolution& sol) {
         using S = std::decay_t<decltype(s)>;
         if constexpr (std::is_same_v<S, LagrangeCase>) {
           return s.nutation_period;
-        } else if constexpr (std::is_same_v<S, BrunCase>) {
+        } else if constexpr (std::is_same_v<S, BrunCase> || std::is_same_v<S, BrunPrymSolution>) {
           return std::numeric_limits<double>::quiet_NaN();
         } else {
           return s.period;
@@ -42,7 +43,11 @@ AnalyticComparison compare_analytic(const QuadraticModel& model, const State& x0
       ref, Model(model), x0, 0.0, times.back(), OutputTimes::list(times, 0.0, times.back()),
       options, [&](std::int64_t k, double, const State& x) { c.numeric[k] = x; });
   for (std::size_t k = 0; k < times.size(); ++k) {
+    const auto start = std::chrono::steady_clock::now();
     const State an = analytic_state(sol, times[k]);
+    c.seconds_per_sample +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+        static_cast<double>(times.size());
     c.analytic.push_back(an);
     if (const auto& x = c.numeric[k]) {
       const double err = std::max((omega(b, an) - omega(b, *x)).cwiseAbs().maxCoeff(),

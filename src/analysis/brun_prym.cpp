@@ -23,8 +23,9 @@ constexpr int kNodes = 12;
 // Bisection levels of brun_prym_abel_increment at most (an interval of 2⁻⁸ of the first).
 constexpr int kMaxLevels = 8;
 // A candidate whose eigenvalues agree with the ξ_j to this fraction of their size carries the
-// divisor (the other candidates differ at O(1)).
-constexpr double kMatch = 1e-8;
+// divisor (the other candidates differ at O(1); a divisor found by inverting the Abel–Prym map
+// carries its round-off amplified by the conditioning of that map, measured up to ~2e-7).
+constexpr double kMatch = 1e-6;
 // Relative round-off of a rate term (a polished root, the line, square roots): a few ε.
 constexpr double kRoundOff = 4 * std::numeric_limits<double>::epsilon();
 
@@ -161,10 +162,7 @@ Complex eigenvalue(const BrunCurve& k, const std::array<Complex, 3>& c, const St
 
 }  // namespace
 
-BrunPrymDivisor brun_prym_divisor(const BrunCurve& k, const State& s) {
-  const State x = to_working_frame(k, s);
-  const auto c = isotropic(k);
-  const BrunPrymLine l = line_of(k, c, x);
+BrunPrymDivisor brun_prym_zeros(const BrunCurve& k, const BrunPrymLine& l) {
   const Complex sl = std::sqrt(Complex(k.lambda_));
   if (l.C == Complex(0.0) || k.lambda_ == 0.0) {
     throw InputError("Brun divisor: expected C = sum c_i gamma_i != 0 and lambda != 0");
@@ -191,12 +189,33 @@ BrunPrymDivisor brun_prym_divisor(const BrunCurve& k, const State& s) {
       u -= f / df;
     }
     const Complex v = -(l.A * u + l.B) / (sl * l.C);
-    const Complex xi_sign = eigenvalue(k, c, x, u, v);
+    d[r] = {u, v, std::sqrt(brun_N(k, u) + 2.0 * sl * k.f * v)};
+  }
+  return d;
+}
+
+std::array<Complex, 2> brun_prym_line_rate(const BrunCurve& k, const BrunPrymLine& l,
+                                           const BrunPrymLine& dl, const BrunPrymDivisor& d) {
+  const Complex sl = std::sqrt(Complex(k.lambda_));
+  std::array<Complex, 2> r{};
+  for (const BrunPrymPoint& p : d) {
+    const Complex term = -2.0 * (dl.A * p.u + dl.B + sl * dl.C * p.v) /
+                         ((2.0 * l.A * p.v + sl * l.C * dP_of(k, p.u)) * p.xi);
+    r[0] += term;
+    r[1] += p.u * term;
+  }
+  return r;
+}
+
+BrunPrymDivisor brun_prym_divisor(const BrunCurve& k, const State& s) {
+  const State x = to_working_frame(k, s);
+  const auto c = isotropic(k);
+  BrunPrymDivisor d = brun_prym_zeros(k, line_of(k, c, x));
+  for (BrunPrymPoint& p : d) {
     // The value from ξ² = N(u) + 2√λ f v (u and v are accurate; the w_i are not near u = e_i),
     // the sign from the eigenvector.
-    Complex xi = std::sqrt(brun_N(k, u) + 2.0 * sl * k.f * v);
-    if (std::abs(xi - xi_sign) > std::abs(xi + xi_sign)) xi = -xi;
-    d[r] = {u, v, xi};
+    const Complex xi_sign = eigenvalue(k, c, x, p.u, p.v);
+    if (std::abs(p.xi - xi_sign) > std::abs(p.xi + xi_sign)) p.xi = -p.xi;
   }
   return d;
 }

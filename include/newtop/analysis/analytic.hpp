@@ -1,12 +1,13 @@
 #pragma once
 /// \file
 /// Which integrable case applies to a model and initial state, and its closed-form or quadrature
-/// solution behind one interface (docs/model.md §5, §6, §10; Brun's case on the level f = 0).
+/// solution behind one interface (docs/model.md §5, §6, §10; Brun's case on every level).
 
 #include <string>
 #include <variant>
 
 #include "newtop/analysis/brun_case.hpp"
+#include "newtop/analysis/brun_prym_inversion.hpp"
 #include "newtop/analysis/euler_poinsot.hpp"
 #include "newtop/analysis/lagrange_case.hpp"
 #include "newtop/analysis/pendulum.hpp"
@@ -19,15 +20,17 @@ std::string to_string(AnalyticKind k);
 struct AnalyticDetection {
   AnalyticKind kind = AnalyticKind::none;
   std::string reason;   ///< why this case applies, or why none does
-  bool solved = false;  ///< analytic_solution is available (Brun: only on the level f = 0)
+  bool solved = false;  ///< analytic_solution is available
 };
 
 /// The first case that applies, in the order Euler–Poinsot, plane pendulum, Lagrange, Brun.
 AnalyticDetection detect_analytic_case(const QuadraticModel& model, const State& x0);
 
-using AnalyticSolution = std::variant<EulerPoinsot, Pendulum, LagrangeCase, BrunCase>;
+using AnalyticSolution =
+    std::variant<EulerPoinsot, Pendulum, LagrangeCase, BrunCase, BrunPrymSolution>;
 
-/// The solution of a solved case (euler_poinsot, pendulum, lagrange, brun on f = 0); throws
+/// The solution of a solved case (euler_poinsot, pendulum, lagrange, brun: BrunCase on f = 0,
+/// BrunPrymSolution on f ≠ 0); throws
 /// InputError for none or an unsolved level.
 AnalyticSolution analytic_solution(const QuadraticModel& model, const State& x0, AnalyticKind kind);
 

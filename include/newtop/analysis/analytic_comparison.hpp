@@ -30,6 +30,9 @@ struct AnalyticComparison {
   std::optional<double> max_abs_error;
   Outcome reference;          ///< the reference run (rkf78 at kAnalyticReferenceTol)
   std::int64_t compared = 0;  ///< samples the reference reached
+  /// Wall-clock seconds of one closed-form state, averaged over the samples (a measurement, so it
+  /// varies from run to run; everything else is deterministic).
+  double seconds_per_sample = 0;
 };
 
 /// The solution `sol` of the model's motion from (0, x0) at the ascending times ≥ 0, against

@@ -49,6 +49,17 @@ BrunPrymLine brun_prym_line(const BrunCurve& k, const State& s);
 /// of the Poisson sphere).
 BrunPrymDivisor brun_prym_divisor(const BrunCurve& k, const State& s);
 
+/// The three zeros (u_j, v_j) on v² = P(u) of A u + B + √λ C v for any complex line (C ≠ 0),
+/// with ξ_j the principal square root of N(u_j) + 2√λ f v_j: the sign of each ξ_j is the
+/// caller's (brun_prym_divisor takes it from the state's eigenvector).
+BrunPrymDivisor brun_prym_zeros(const BrunCurve& k, const BrunPrymLine& l);
+
+/// Σ_j (1, u_j) u̇_j/(v_j ξ_j) as the line l, whose zeros with their ξ_j are d, moves by dl:
+/// u̇_j/(v_j ξ_j) = −2(Ȧu_j + Ḃ + √λ Ċ v_j)/((2A v_j + √λ C P′(u_j)) ξ_j).
+std::array<std::complex<double>, 2> brun_prym_line_rate(const BrunCurve& k, const BrunPrymLine& l,
+                                                        const BrunPrymLine& dl,
+                                                        const BrunPrymDivisor& d);
+
 /// The body-frame state on the level of k whose divisor is d (the inverse of brun_prym_divisor):
 /// the line through the points gives (A : B : C); with μA = Σc_i m_i, μB = −Σc_i e_i m_i,
 /// μC = Σc_i γ_i six real linear equations leave a plane of (m, γ, μ), on which m·γ = f and
