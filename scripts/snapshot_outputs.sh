@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # Records what every subcommand prints and writes on every example: stdout, stderr, the exit code
 # and the CSV it writes, one file per run, so that two builds can be compared byte for byte
-# (`diff -r BEFORE AFTER`). Run it before and after a change to the program's structure.
+# (`diff -r BEFORE AFTER`). Run it before and after a change to the program's structure. Known to
+# vary from run to run: the sweep's points per second (stderr) and analytic's seconds_per_sample.
 # Usage: scripts/snapshot_outputs.sh NEWTOP_BINARY OUT_DIR
 set -uo pipefail
 newtop=$(realpath "$1")
 out=$2
 cd "$(dirname "$0")/.."
 mkdir -p "$out"
-tmp=$(mktemp -d)
+# A fixed working folder, so that the paths the program prints ("written to ...") compare equal.
+tmp=/tmp/newtop-snapshot-work
+rm -rf "$tmp" && mkdir -p "$tmp"
 trap 'rm -rf "$tmp"' EXIT
 run() {  # run NAME ARGS...: the program's stdout, stderr and exit code under OUT/NAME.*
   local name=$1
