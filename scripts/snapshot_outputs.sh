@@ -6,7 +6,7 @@
 # Usage: scripts/snapshot_outputs.sh NEWTOP_BINARY OUT_DIR
 set -uo pipefail
 newtop=$(realpath "$1")
-out=$2
+out=$(realpath -m "$2")
 cd "$(dirname "$0")/.."
 mkdir -p "$out"
 # A fixed working folder, so that the paths the program prints ("written to ...") compare equal.
