@@ -18,6 +18,16 @@ std::vector<Command>& commands() {
   return c;
 }
 
+namespace {
+bool quiet = false;  // --quiet: no warnings
+}  // namespace
+
+void warn(std::string what) {
+  if (quiet) return;
+  std::replace(what.begin(), what.end(), '\n', ' ');
+  std::cerr << "newtop: warning: " << what << '\n';
+}
+
 int bad_input(std::string what) {
   std::replace(what.begin(), what.end(), '\n', ' ');
   std::cerr << "newtop: error: " << what << '\n';
@@ -56,11 +66,20 @@ std::string unexpected(const CLI::App& app, const std::string& arg) {
 
 namespace newtop::app {
 
+// The orbital frame of the orbit scenarios' attitude outputs (docs/orbit.md §11).
+constexpr const char* kLvlhHelp =
+    "Orbit scenarios: attitude relative to LVLH: z to nadir (-gamma), y opposite the orbit normal "
+    "(-n), x = y cross z (along-track); q0..q3 = rotation LVLH -> body (scalar first, q0 >= 0); "
+    "roll, pitch, yaw [rad] with C(body<-LVLH) = R1(roll) R2(pitch) R3(yaw).";
+
 int run_newtop(int argc, char** argv, bool remove_partial_files_on_signals) {
   CLI::App app{
       "newtop: rigid body about a fixed point in the field of a distant centre "
       "(Euler–Poisson equations, first integrals, geometric integrators)"};
   app.require_subcommand(1);
+  app.footer(kLvlhHelp);
+  quiet = false;
+  app.add_flag("--quiet", quiet, "no warnings on stderr (give it before the subcommand)");
   app.set_version_flag("--version", "newtop 0.1.0");
   auto& cmds = commands();
   std::sort(cmds.begin(), cmds.end(),
