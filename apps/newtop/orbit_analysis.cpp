@@ -10,8 +10,8 @@
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/orbit/debra_delp.hpp"
-#include "newtop/orbit/orbit_equilibria.hpp"
 #include "newtop/orbit/lvlh.hpp"
+#include "newtop/orbit/orbit_equilibria.hpp"
 #include "orbit_commands.hpp"
 #include "orbit_summary.hpp"
 
@@ -96,8 +96,9 @@ int orbit_stability(const std::string& path, bool json, std::optional<int> equil
     const RelativeEquilibriumSet set = find_relative_equilibria(model);
     const int n = static_cast<int>(set.equilibria.size());
     if (*equilibrium < 1 || *equilibrium > n) {
-      throw InputError("--equilibrium: expected 1 to " + std::to_string(n) + " (newtop equilibria " +
-                       sc.source + "), found " + std::to_string(*equilibrium));
+      throw InputError("--equilibrium: expected 1 to " + std::to_string(n) +
+                       " (newtop equilibria " + sc.source + "), found " +
+                       std::to_string(*equilibrium));
     }
     const RelativeEquilibrium& e = set.equilibria[static_cast<std::size_t>(*equilibrium - 1)];
     sc.initial = relative_rest_state(model, e.gamma, e.normal);

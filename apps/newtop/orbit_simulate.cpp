@@ -42,6 +42,9 @@ MethodSettings orbit_method(const io::OrbitScenario& sc, const std::optional<std
                ? std::string(cli_step ? kDefaultFixedMethod : kOrbitAdaptiveMethod)
            : f.method ? *f.method
                       : std::string(step ? kDefaultFixedMethod : kOrbitAdaptiveMethod);
+  MethodSettings probe = m;  // the name first: a method that does not run on an orbit
+  probe.step = 1.0;
+  validate_orbit_method(probe);
   if (is_orbit_adaptive_method(m.name)) {
     if (!tol) {
       throw InputError(sc.source + ": tol: method " + m.name + " needs --tol or [integrate] tol");
@@ -81,8 +84,9 @@ struct OrbitRowPlan {
 OrbitRowPlan row_plan(const io::OrbitScenario& sc, const OrbitSimulateArgs& a, double t_end,
                       std::int64_t max_steps, bool to_file) {
   if (a.split) {
-    throw InputError("--split: expected a body scenario (the free body's split), found an orbit "
-                     "scenario ([orbit]): the orbit's splitting has one split");
+    throw InputError(
+        "--split: expected a body scenario (the free body's split), found an orbit "
+        "scenario ([orbit]): the orbit's splitting has one split");
   }
   OrbitRowPlan p;
   const bool cli_rows = a.every || a.dt_out || a.times;
@@ -129,8 +133,7 @@ int orbit_simulate(const std::string& path, const OrbitSimulateArgs& a) {
   warn_units(sc);
   const MethodSettings method = orbit_method(sc, a.method, a.step, a.tol);
   const double t_end = a.times && !a.t_end && !sc.integrate.t_end
-                           ? times_end("--times", parse_times("--times", *a.times),
-                                       sc.integrate.t0)
+                           ? times_end("--times", parse_times("--times", *a.times), sc.integrate.t0)
                            : orbit_t_end(sc, a.t_end);
   if (!(t_end > sc.integrate.t0)) {
     throw InputError("--times: expected times after t0 = " + format_number(sc.integrate.t0));
@@ -175,11 +178,10 @@ int orbit_simulate(const std::string& path, const OrbitSimulateArgs& a) {
     const auto& e = std::get<EllipticOrbit>(sc.orbit);
     const EllipticOrbitModel model(sc.body, e);
     const double nu0 = e.true_anomaly0, nu1 = true_anomaly_at(e, t_end - t0);
-    out = plan.times
-              ? run_orbit_method_sampled(method, model, sc.initial, nu0, nu1,
-                                         run_times(sc, *plan.times, nu0, nu1), max_steps, sample,
-                                         observer)
-              : run_orbit_method(method, model, sc.initial, nu0, nu1, max_steps, observer);
+    out = plan.times ? run_orbit_method_sampled(method, model, sc.initial, nu0, nu1,
+                                                run_times(sc, *plan.times, nu0, nu1), max_steps,
+                                                sample, observer)
+                     : run_orbit_method(method, model, sc.initial, nu0, nu1, max_steps, observer);
   }
   if (file && !plan.times && last != out.t) {
     file->stream() << orbit_csv_row(sc, out.state, out.t, plan.columns) << '\n';

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "newtop/orbit/debra_delp.hpp"
 #include "cli.hpp"
+#include "newtop/orbit/debra_delp.hpp"
 #include "newtop/orbit/lvlh.hpp"
 
 namespace newtop::app {
@@ -180,7 +180,7 @@ void print_orbit_simulation(std::ostream& os, const OrbitRunReport& r) {
   print_orbit_model(os, r.scenario);
   os << "method    " << r.method.name
      << (is_orbit_adaptive_method(r.method.name) ? "  tol = " + format_number(r.method.abs_tol)
-                                  : "  step = " + format_number(r.method.step))
+                                                 : "  step = " + format_number(r.method.step))
      << "\noutcome   " << to_string(r.outcome.status) << " at t = " << format_number(r.t_final)
      << " after " << r.outcome.steps
      << " steps\nfinal     omega = " << format_vector(omega(r.scenario.body, s))

@@ -23,9 +23,9 @@ const std::vector<std::string> kBodyKeys{"inertia", "inertia_tensor", "mass", "c
                                          "gyrostat"};
 const std::vector<std::string> kOrbitKeys{
     "kind", "mu", "radius", "rate", "semi_major_axis", "eccentricity", "true_anomaly"};
-const std::vector<std::string> kInitialKeys{
-    "omega",           "gamma",          "normal",         "quaternion", "euler_321",
-    "roll_pitch_yaw", "lvlh_quaternion", "omega_relative", "normalize"};
+const std::vector<std::string> kInitialKeys{"omega",           "gamma",          "normal",
+                                            "quaternion",      "euler_321",      "roll_pitch_yaw",
+                                            "lvlh_quaternion", "omega_relative", "normalize"};
 const std::vector<std::string> kIntegrateKeys{"method", "step", "tol", "t_end", "t0", "max_steps"};
 const std::vector<std::string> kOutputKeys{"file", "every"};
 
@@ -124,9 +124,8 @@ Eigen::Quaterniond read_quaternion(const toml::table& t, TableReader& r, bool no
   }
   const double norm = v.norm();
   if (norm == 0.0 || (!normalize && std::abs(norm - 1.0) > kUnitTolerance)) {
-    r.fail(key,
-           "expected a unit quaternion (|q| = 1 to 1e-12), found |q| = " + format_number(norm) +
-               "; add normalize = true to [initial] to rescale it");
+    r.fail(key, "expected a unit quaternion (|q| = 1 to 1e-12), found |q| = " +
+                    format_number(norm) + "; add normalize = true to [initial] to rescale it");
   }
   v /= norm;
   return Eigen::Quaterniond(v[0], v[1], v[2], v[3]);
@@ -135,11 +134,11 @@ Eigen::Quaterniond read_quaternion(const toml::table& t, TableReader& r, bool no
 /// C(body←LVLH) from roll_pitch_yaw or lvlh_quaternion (docs/orbit.md §11), as the orbital
 /// frame (columns e_r = γ, e_t = n × γ, e_n = n) in the user's body components.
 Mat3 lvlh_frame(const toml::table& t, TableReader& r, bool normalize) {
-  const Mat3 C = r.has("roll_pitch_yaw")
-                     ? body_from_roll_pitch_yaw(r.vec3("roll_pitch_yaw"))
-                     : Mat3(read_quaternion(t, r, normalize, "lvlh_quaternion")
-                                .toRotationMatrix()
-                                .transpose());
+  const Mat3 C =
+      r.has("roll_pitch_yaw")
+          ? body_from_roll_pitch_yaw(r.vec3("roll_pitch_yaw"))
+          : Mat3(
+                read_quaternion(t, r, normalize, "lvlh_quaternion").toRotationMatrix().transpose());
   Mat3 F;
   F.col(0) = -C.col(2);
   F.col(1) = C.col(0);
@@ -247,7 +246,7 @@ OrbitScenario parse_orbit_scenario(const std::string& text, const std::string& s
   TableReader body_reader(*section("body", true), source, "body");
   const Body body = read_orbit_body(body_reader);
   TableReader orbit_reader(*section("orbit", true), source, "orbit");
-  OrbitScenario s{source, body, read_orbit(orbit_reader), {}, {}, {}};
+  OrbitScenario s{source, body, read_orbit(orbit_reader), {}, {}, {}, {}, {}};
   if (const toml::table* o = doc["orbit"].as_table()) {
     s.mu = (*o)["mu"].value<double>();
     s.radius = (*o)["radius"].value<double>();

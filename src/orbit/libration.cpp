@@ -40,8 +40,8 @@ PitchFrame pitch_frame(const Body& body, const OrbitState& s) {
   P(1, (ax + 2) % 3) = sign;
   P(2, ax) = sign;
   const Vec3 I = (P * body.inertia()).cwiseAbs();
-  const Body turned = Body::from_principal(I, body.mass(), P * body.center_of_mass(),
-                                           P * body.gyrostat());
+  const Body turned =
+      Body::from_principal(I, body.mass(), P * body.center_of_mass(), P * body.gyrostat());
   return {turned, {P * s.m, P * s.gamma, P * s.normal}, ax};
 }
 

@@ -128,9 +128,7 @@ double true_anomaly_at(const EllipticOrbit& o, double t) {
 namespace {
 
 /// Earth's μ in m³/s² (scale 1) or in km³/s² (scale 1e-9), within 1 %.
-bool is_earth_mu(double mu, double scale) {
-  return std::abs(mu / (kEarthMu * scale) - 1.0) < 0.01;
-}
+bool is_earth_mu(double mu, double scale) { return std::abs(mu / (kEarthMu * scale) - 1.0) < 0.01; }
 
 }  // namespace
 
