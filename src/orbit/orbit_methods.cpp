@@ -74,17 +74,22 @@ decltype(auto) with_orbit_stepper(const MethodSettings& settings, Fn&& fn) {
   return fn(s);
 }
 
-IntegrateOptions run_options(const MethodSettings& settings, std::int64_t max_steps) {
+/// The driver's options of a run from a to b: the adaptive methods' first trial step is
+/// |b − a|/1000 on an orbit (the orbit's runs have always started so; the step controller takes
+/// over after one trial).
+IntegrateOptions run_options(const MethodSettings& settings, std::int64_t max_steps, double a,
+                             double b) {
   IntegrateOptions o;
   o.step = settings.step;
   o.max_steps = max_steps;
+  if (is_orbit_adaptive_method(settings.name)) o.initial_step = std::abs(b - a) / 1000.0;
   return o;
 }
 
 template <class M>
 OrbitOutcome run(const MethodSettings& settings, const M& model, const OrbitState& x, double a,
                  double b, std::int64_t max_steps, const OrbitObserver& observer) {
-  const IntegrateOptions o = run_options(settings, max_steps);
+  const IntegrateOptions o = run_options(settings, max_steps, a, b);
   return with_orbit_stepper(settings, [&](auto& s) {
     if (!observer) return integrate(s, model, x, a, b, o);
     return integrate(s, model, x, a, b, o, observer);
@@ -95,7 +100,7 @@ template <class M>
 OrbitOutcome run_sampled(const MethodSettings& settings, const M& model, const OrbitState& x,
                          double a, double b, const OutputTimes& times, std::int64_t max_steps,
                          const OrbitSample& sample, const OrbitObserver& observer) {
-  const IntegrateOptions o = run_options(settings, max_steps);
+  const IntegrateOptions o = run_options(settings, max_steps, a, b);
   auto on_sample = [&sample](std::int64_t k, double t, const OrbitState& s) {
     if (sample) sample(k, t, s);
   };
@@ -110,7 +115,7 @@ OrbitOutcome run_adaptive(const M& model, const OrbitState& x, double a, double 
                           const OrbitAdaptiveOptions& opt, const OrbitObserver& observer) {
   OrbitRkf78 s(opt.abs_tol, opt.rel_tol);
   IntegrateOptions o;
-  o.initial_step = opt.initial_step;
+  o.initial_step = opt.initial_step > 0 ? opt.initial_step : std::abs(b - a) / 1000.0;
   o.min_step_factor = opt.min_step_factor;
   o.max_steps = opt.max_steps;
   if (!observer) return integrate(s, model, x, a, b, o);

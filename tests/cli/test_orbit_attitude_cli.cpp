@@ -99,12 +99,15 @@ Mat3 dcm_of_euler_parameters(double q0, const Vec3& q) {
 }
 
 // Attitudes from columns that round-trip (shortest form) agree with one built from the rounded γ
-// and n to a few ulps of the matrix entries (≤ 1): 1e-13 leaves room for the angle extraction
-// (atan2/asin of entries exact to 4 ulp, the asin's conditioning away from ±π/2 bounded by 2).
-// On top of it, C built from γ and n is a rotation only to the row's Casimir error δ (|γ|, |n|
-// and γ·n off by δ): the attitude of the nearest rotation differs from it by at most ~2δ; 4δ.
+// and n to a few ulps of the matrix entries (≤ 1): 1e-13 leaves room for the extraction. On top
+// of it, C built from γ and n is a rotation only to the row's Casimir error δ (|γ|, |n| and γ·n
+// off by δ): the quaternion of the nearest rotation differs from it by at most ~2δ (4δ allowed),
+// and the outer angles, atan2 of entries of size |cos θ| (3-2-1) or |sin θ| (3-1-3) off by δ + ε,
+// by 4(δ + ε)/|cos θ| (or /|sin θ|) — near gimbal lock (examples/orbit_leo_lagrange.toml pitches
+// at 88.5°, cos θ = 0.027) that is the larger term.
 constexpr double kAttitudeTolerance = 1e-13;
 constexpr double kCasimirFactor = 4.0;
+constexpr double kEps = 2.220446049250313e-16;
 
 void expect_attitude_matches_gamma_and_normal(const Table& t, int euler) {
   ASSERT_GT(t.rows.size(), 10u);
@@ -115,14 +118,17 @@ void expect_attitude_matches_gamma_and_normal(const Table& t, int euler) {
     EXPECT_GE(q0, 0.0);
     const Mat3 Cq = dcm_of_euler_parameters(q0, t.vec(i, "q1"));
     ASSERT_LT((Cq - C).cwiseAbs().maxCoeff(), tol) << "row " << i;
+    const double delta = t.rows[i][t.col("casimir_error")] + kEps;
     if (euler == 321) {
       const Vec3 a = t.vec(i, "roll");
       const Mat3 Ce = frame_rotation(0, a[0]) * frame_rotation(1, a[1]) * frame_rotation(2, a[2]);
-      ASSERT_LT((Ce - C).cwiseAbs().maxCoeff(), tol) << "row " << i;
+      const double angles = tol + kCasimirFactor * delta / std::abs(std::cos(a[1]));
+      ASSERT_LT((Ce - C).cwiseAbs().maxCoeff(), angles) << "row " << i;
     } else {
       const Vec3 a = t.vec(i, "euler313_phi");
       const Mat3 Ce = frame_rotation(2, a[2]) * frame_rotation(0, a[1]) * frame_rotation(2, a[0]);
-      ASSERT_LT((Ce - C).cwiseAbs().maxCoeff(), tol) << "row " << i;
+      const double angles = tol + kCasimirFactor * delta / std::abs(std::sin(a[1]));
+      ASSERT_LT((Ce - C).cwiseAbs().maxCoeff(), angles) << "row " << i;
     }
   }
 }
