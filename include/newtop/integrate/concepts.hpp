@@ -16,7 +16,9 @@ namespace newtop {
 template <class S, class M, class X = State>
 concept FixedStepper = requires(S s, const S cs, const M& model, X& x, double t, double h) {
   { cs.order() } -> std::convertible_to<int>;
-  requires requires { s.step(model, x, h); } || requires { s.step(model, x, t, h); };
+  requires requires { s.step(model, x, h); } || requires {
+    s.step(model, x, t, h);
+  };
 };
 
 /// Adaptive methods: a trial step that gives NaN or inf is rejected and retried this much shorter

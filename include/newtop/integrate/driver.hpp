@@ -43,7 +43,9 @@ using OutcomeOf = typename OutcomeFor<X>::type;
 /// runs through the same driver, with check_state(x) and is_finite(x) for its state and
 /// OutcomeFor specialised (the engine knows nothing else of it).
 template <class M>
-concept ModelWithState = requires { typename M::state_type; };
+concept ModelWithState = requires {
+  typename M::state_type;
+};
 
 namespace detail {
 
