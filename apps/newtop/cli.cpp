@@ -198,13 +198,21 @@ void check_integer_options(CLI::App& sub) {
 
 namespace newtop::app {
 
+// The orbital frame of the orbit scenarios' attitude outputs (docs/orbit.md §11).
+constexpr const char* kLvlhHelp =
+    "Orbit scenarios: attitude relative to LVLH: z to nadir (-gamma), y opposite the orbit normal "
+    "(-n), x = y cross z (along-track); q0..q3 = rotation LVLH -> body (scalar first, q0 >= 0); "
+    "roll, pitch, yaw [rad] with C(body<-LVLH) = R1(roll) R2(pitch) R3(yaw).";
+
 int run_newtop(int argc, char** argv, bool remove_partial_files_on_signals) {
   CLI::App app{
       "newtop: rigid body about a fixed point in the field of a distant centre "
       "(Euler–Poisson equations, first integrals, geometric integrators)"};
   app.require_subcommand(1);
+  app.footer(kLvlhHelp);
   app.set_version_flag("--version", "newtop 0.1.0");
   quiet_flag = false;  // the Python module runs the command line more than once in a process
+  app.add_flag("--quiet", quiet_flag, "no warnings on stderr (before or after the subcommand)");
   set_units(kUnitFree);
   auto& cmds = commands();
   std::sort(cmds.begin(), cmds.end(),

@@ -103,7 +103,9 @@ EllipticOrbit pitch_orbit(const io::OrbitScenario& sc) {
 int run_guarded(const LibrationArgs& a) {
   const io::OrbitScenario sc = io::load_orbit_scenario(a.scenario);
   const EllipticOrbit orbit = pitch_orbit(sc);
-  const PitchProblem problem = pitch_problem(sc.body, orbit);
+  // The pitch axis is the principal axis along the orbit normal, whichever it is.
+  const PitchFrame frame = pitch_frame(sc.body, sc.initial);
+  const PitchProblem problem = pitch_problem(frame.body, orbit);
   const std::vector<SpinOrbitResonance> resonances = parse_resonances(a.resonances);
   if (a.iterates < 1 || a.iterates > 100000) {
     throw InputError("--iterates: expected 1 to 100000, found " + std::to_string(a.iterates));
@@ -113,7 +115,7 @@ int run_guarded(const LibrationArgs& a) {
   const double nu0 = orbit.true_anomaly0;
   const double periapsis = 2 * std::numbers::pi * std::ceil(nu0 / (2 * std::numbers::pi));
   const Vec2 x0 = pitch_advance(
-      problem, pitch_state(sc.body, orbit, sc.initial, nu0, kPlanarTolerance), nu0, periapsis);
+      problem, pitch_state(frame.body, orbit, frame.state, nu0, kPlanarTolerance), nu0, periapsis);
   std::vector<Vec2> starts{x0};
   if (scan) {
     for (int i = 0; i < scan->n; ++i) {

@@ -10,6 +10,7 @@
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/orbit/debra_delp.hpp"
+#include "newtop/orbit/lvlh.hpp"
 #include "newtop/orbit/orbit_equilibria.hpp"
 #include "orbit_commands.hpp"
 #include "orbit_summary.hpp"
@@ -48,11 +49,17 @@ void add_stability(io::Json& j, const RelativeSpectrum& sp) {
 
 int orbit_equilibria(const std::string& path, bool json) {
   const io::OrbitScenario sc = io::load_orbit_scenario(path);
+  warn_units(sc);
   const RelativeEquilibriumSet set = find_relative_equilibria(circular_model(sc, "equilibria"));
   io::Json list = io::Json::array();
+  int number = 0;
   for (const auto& e : set.equilibria) {
-    io::Json j{{"gamma", io::to_json(e.gamma)},
+    const Mat3 C = lvlh_to_body(OrbitState{Vec3::Zero(), e.gamma, e.normal});
+    io::Json j{{"number", ++number},
+               {"gamma", io::to_json(e.gamma)},
                {"normal", io::to_json(e.normal)},
+               {"lvlh_quaternion", scalar_first(lvlh_quaternion(C))},
+               {"roll_pitch_yaw", io::to_json(roll_pitch_yaw(C))},
                {"jacobi", e.jacobi},
                {"residual", e.residual}};
     add_stability(j, e.stability);
@@ -69,17 +76,33 @@ int orbit_equilibria(const std::string& path, bool json) {
   print_orbit_model(std::cout, sc);
   std::cout << set.equilibria.size() << " relative equilibria (" << set.lyapunov << " Lyapunov, "
             << set.gyroscopic << " gyroscopic, " << set.unstable << " unstable)\n";
-  for (const auto& e : set.equilibria) {
-    std::cout << "  gamma = " << format_vector(e.gamma) << "  normal = " << format_vector(e.normal)
-              << "  jacobi = " << format_number(e.jacobi) << "  " << to_string(e.stability.verdict)
-              << "\n";
+  for (const auto& e : list) {
+    std::cout << "  " << e["number"].get<int>() << "  gamma = " << e["gamma"].dump()
+              << "  normal = " << e["normal"].dump()
+              << "  roll,pitch,yaw = " << e["roll_pitch_yaw"].dump()
+              << "  q = " << e["lvlh_quaternion"].dump()
+              << "  jacobi = " << format_number(e["jacobi"].get<double>()) << "  "
+              << e["verdict"].get<std::string>() << "\n";
   }
   return 0;
 }
 
-int orbit_stability(const std::string& path, bool json) {
-  const io::OrbitScenario sc = io::load_orbit_scenario(path);
+int orbit_stability(const std::string& path, bool json, std::optional<int> equilibrium) {
+  io::OrbitScenario sc = io::load_orbit_scenario(path);
+  warn_units(sc);
   const CircularOrbitModel model = circular_model(sc, "stability");
+  if (equilibrium) {
+    // --equilibrium K: the K-th (1-based) of `newtop equilibria`'s list, at rest in the frame.
+    const RelativeEquilibriumSet set = find_relative_equilibria(model);
+    const int n = static_cast<int>(set.equilibria.size());
+    if (*equilibrium < 1 || *equilibrium > n) {
+      throw InputError("--equilibrium: expected 1 to " + std::to_string(n) +
+                       " (newtop equilibria " + sc.source + "), found " +
+                       std::to_string(*equilibrium));
+    }
+    const RelativeEquilibrium& e = set.equilibria[static_cast<std::size_t>(*equilibrium - 1)];
+    sc.initial = relative_rest_state(model, e.gamma, e.normal);
+  }
   const double res = fixed_point_residual(model, sc.initial);
   if (!(res <= kRelativeEquilibriumTolerance)) {
     throw InputError(

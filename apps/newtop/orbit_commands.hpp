@@ -13,9 +13,11 @@
 namespace newtop::app {
 
 struct OrbitSimulateArgs {
-  std::optional<double> t_end, step, tol;
-  std::optional<std::string> method, out;
+  std::optional<double> t_end, step, tol, dt_out;
+  std::optional<std::string> method, out, times, split;
   std::optional<std::int64_t> every;
+  std::optional<int> euler;
+  bool attitude = false;
   bool json = false;
 };
 
@@ -40,7 +42,8 @@ int orbit_section_command(const OrbitSectionArgs& a);
 int orbit_simulate(const std::string& path, const OrbitSimulateArgs& a);
 int orbit_integrals(const std::string& path, bool json);
 int orbit_equilibria(const std::string& path, bool json);
-int orbit_stability(const std::string& path, bool json);
+/// `equilibrium`: the K-th relative equilibrium of `newtop equilibria` instead of [initial].
+int orbit_stability(const std::string& path, bool json, std::optional<int> equilibrium = {});
 
 /// `--diagram NAME` (only "debra-delp"), over `--scan k_R=LO:HI:N,k_Y=LO:HI:M` (default
 /// k_R, k_Y = -0.99:0.99:67), to the CSV `--out` and/or JSON.

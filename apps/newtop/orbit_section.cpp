@@ -10,6 +10,7 @@
 #include "interrupt.hpp"
 #include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
+#include "newtop/orbit/lvlh.hpp"
 #include "orbit_commands.hpp"
 #include "orbit_summary.hpp"
 #include "summary.hpp"
@@ -68,6 +69,7 @@ int orbit_section_command(const OrbitSectionArgs& a) {
   const phase::Surface surface = phase::parse_surface(a.surface);
   const phase::Direction direction = phase::parse_direction(a.direction);
   const io::OrbitScenario sc = io::load_orbit_scenario(a.scenario);
+  warn_units(sc);
   const MethodSettings method = orbit_method(sc, a.method, a.step, a.tol);
   const double t0 = sc.integrate.t0, t_end = orbit_t_end(sc, a.t_end);
   const std::int64_t max_steps = sc.integrate.max_steps.value_or(100'000'000);
@@ -119,7 +121,9 @@ int orbit_section_command(const OrbitSectionArgs& a) {
                     {"normal", io::to_json(c.x.normal)},
                     {"coords",
                      {{"euler_321", io::to_json(w.coords.euler_321)},
-                      {"omega_relative", io::to_json(w.coords.omega_relative)}}}};
+                      {"omega_relative", io::to_json(w.coords.omega_relative)},
+                      {"roll_pitch_yaw", io::to_json(roll_pitch_yaw(lvlh_to_body(c.x)))},
+                      {"lvlh_quaternion", scalar_first(lvlh_quaternion(lvlh_to_body(c.x)))}}}};
       if (!sc.circular()) e["nu"] = c.t;
       list.push_back(e);
     }

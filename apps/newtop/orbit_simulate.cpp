@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <vector>
 
 #include "newtop/io/json.hpp"
 #include "newtop/io/orbit_scenario.hpp"
@@ -12,6 +13,7 @@
 #include "newtop/orbit/orbit_integrate.hpp"
 #include "orbit_commands.hpp"
 #include "orbit_summary.hpp"
+#include "times_option.hpp"
 
 namespace newtop::app {
 namespace {
@@ -40,8 +42,13 @@ MethodSettings orbit_method(const io::OrbitScenario& sc, const std::optional<std
                ? std::string(cli_step ? kDefaultFixedMethod : kOrbitAdaptiveMethod)
            : f.method ? *f.method
                       : std::string(step ? kDefaultFixedMethod : kOrbitAdaptiveMethod);
-  if (m.name == "rkf78") {
-    if (!tol) throw InputError(sc.source + ": tol: method rkf78 needs --tol or [integrate] tol");
+  MethodSettings probe = m;  // the name first: a method that does not run on an orbit
+  probe.step = 1.0;
+  validate_orbit_method(probe);
+  if (is_orbit_adaptive_method(m.name)) {
+    if (!tol) {
+      throw InputError(sc.source + ": tol: method " + m.name + " needs --tol or [integrate] tol");
+    }
     m.abs_tol = m.rel_tol = *tol;
   } else {
     if (!step) {
@@ -64,21 +71,86 @@ double orbit_t_end(const io::OrbitScenario& sc, std::optional<double> cli_t_end)
   return *t_end;
 }
 
+namespace {
+
+/// The rows of an orbit run: every N-th step, or the output times (in t; ν_k = ν(t_k) on an
+/// ellipse, the row keeping t_k itself).
+struct OrbitRowPlan {
+  std::int64_t every = 1;
+  std::optional<OutputTimes> times;  ///< in time
+  OrbitAttitudeColumns columns;
+};
+
+OrbitRowPlan row_plan(const io::OrbitScenario& sc, const OrbitSimulateArgs& a, double t_end,
+                      std::int64_t max_steps, bool to_file) {
+  if (a.split) {
+    throw InputError(
+        "--split: expected a body scenario (the free body's split), found an orbit "
+        "scenario ([orbit]): the orbit's splitting has one split");
+  }
+  OrbitRowPlan p;
+  const bool cli_rows = a.every || a.dt_out || a.times;
+  p.every = a.every.value_or(cli_rows ? 1 : sc.output.every);
+  if (p.every < 1) {
+    throw InputError("--every: expected an integer >= 1, found " + std::to_string(p.every));
+  }
+  const double t0 = sc.integrate.t0;
+  if (a.dt_out) p.times = OutputTimes::every(*a.dt_out, t0, t_end);
+  if (a.times) p.times = output_times_option("--times", *a.times, t0, t_end);
+  const char* name = a.times ? "--times" : "--dt-out";
+  if (p.times && !to_file) {
+    throw InputError(std::string(name) +
+                     ": output times need a CSV file: give --out or [output] file");
+  }
+  if (p.times && p.times->size() > max_steps) {
+    throw InputError(std::string(name) + ": " + std::to_string(p.times->size()) +
+                     " output times, more than max_steps = " + std::to_string(max_steps));
+  }
+  if ((a.attitude || a.euler) && !to_file) {
+    throw InputError(std::string(a.euler ? "--euler" : "--attitude") +
+                     ": the attitude columns need a CSV file: give --out or [output] file");
+  }
+  p.columns = {a.attitude || a.euler.has_value(), a.euler.value_or(0)};
+  return p;
+}
+
+/// The output times in the integrator's variable: t itself, or ν(t_k) by Kepler's equation.
+OutputTimes run_times(const io::OrbitScenario& sc, const OutputTimes& t, double nu0, double nu1) {
+  const auto* e = std::get_if<EllipticOrbit>(&sc.orbit);
+  if (!e) return t;
+  std::vector<double> nu;
+  nu.reserve(static_cast<std::size_t>(t.size()));
+  for (std::int64_t k = 0; k < t.size(); ++k) {
+    nu.push_back(true_anomaly_at(*e, t[k] - sc.integrate.t0));
+  }
+  return OutputTimes::list(std::move(nu), nu0, nu1);
+}
+
+}  // namespace
+
 int orbit_simulate(const std::string& path, const OrbitSimulateArgs& a) {
   const io::OrbitScenario sc = io::load_orbit_scenario(path);
+  warn_units(sc);
   const MethodSettings method = orbit_method(sc, a.method, a.step, a.tol);
-  const std::optional<double> t_end = orbit_t_end(sc, a.t_end);
-  const std::int64_t every = a.every.value_or(sc.output.every);
-  if (every < 1)
-    throw InputError("--every: expected an integer >= 1, found " + std::to_string(every));
+  const double t_end = a.times && !a.t_end && !sc.integrate.t_end
+                           ? times_end("--times", parse_times("--times", *a.times), sc.integrate.t0)
+                           : orbit_t_end(sc, a.t_end);
+  if (!(t_end > sc.integrate.t0)) {
+    throw InputError("--times: expected times after t0 = " + format_number(sc.integrate.t0));
+  }
   const std::optional<std::string> out_path = a.out ? a.out : sc.output.file;
+  if (out_path && out_path->size() >= 3 && out_path->substr(out_path->size() - 3) == ".h5") {
+    throw InputError("--out: expected a CSV file name, found " + *out_path +
+                     ": simulate writes CSV trajectories (HDF5 is written by sweep)");
+  }
   const double t0 = sc.integrate.t0;
   const std::int64_t max_steps = sc.integrate.max_steps.value_or(100'000'000);
+  const OrbitRowPlan plan = row_plan(sc, a, t_end, max_steps, out_path.has_value());
 
   std::unique_ptr<io::AtomicFile> file;
   if (out_path) {
     file = std::make_unique<io::AtomicFile>(*out_path);
-    file->stream() << orbit_csv_header(sc) << '\n';
+    file->stream() << orbit_csv_header(sc, plan.columns) << '\n';
   }
   Tracker tr{orbit_values(sc, sc.initial, start_variable(sc)), {}};
   std::int64_t count = 0;
@@ -87,22 +159,33 @@ int orbit_simulate(const std::string& path, const OrbitSimulateArgs& a) {
   auto time_of = [&](double x) { return orbit_time(sc, x, t0); };
   auto observer = [&](double x, const OrbitState& s) {
     tr.observe(orbit_values(sc, s, x));
-    if (file && count % every == 0) {
-      file->stream() << orbit_csv_row(sc, s, x) << '\n';
+    if (file && !plan.times && count % plan.every == 0) {
+      file->stream() << orbit_csv_row(sc, s, x, plan.columns) << '\n';
       last = x;
     }
     ++count;
   };
+  auto sample = [&](std::int64_t k, double x, const OrbitState& s) {
+    file->stream() << orbit_csv_row(sc, s, x, plan.columns, (*plan.times)[k]) << '\n';
+  };
   OrbitOutcome out;
   if (const auto* c = std::get_if<CircularOrbit>(&sc.orbit)) {
-    out = run_orbit_method(method, CircularOrbitModel(sc.body, *c), sc.initial, t0, *t_end,
-                           max_steps, observer);
+    const CircularOrbitModel model(sc.body, *c);
+    out = plan.times ? run_orbit_method_sampled(method, model, sc.initial, t0, t_end, *plan.times,
+                                                max_steps, sample, observer)
+                     : run_orbit_method(method, model, sc.initial, t0, t_end, max_steps, observer);
   } else {
     const auto& e = std::get<EllipticOrbit>(sc.orbit);
-    out = run_orbit_method(method, EllipticOrbitModel(sc.body, e), sc.initial, e.true_anomaly0,
-                           true_anomaly_at(e, *t_end - t0), max_steps, observer);
+    const EllipticOrbitModel model(sc.body, e);
+    const double nu0 = e.true_anomaly0, nu1 = true_anomaly_at(e, t_end - t0);
+    out = plan.times ? run_orbit_method_sampled(method, model, sc.initial, nu0, nu1,
+                                                run_times(sc, *plan.times, nu0, nu1), max_steps,
+                                                sample, observer)
+                     : run_orbit_method(method, model, sc.initial, nu0, nu1, max_steps, observer);
   }
-  if (file && last != out.t) file->stream() << orbit_csv_row(sc, out.state, out.t) << '\n';
+  if (file && !plan.times && last != out.t) {
+    file->stream() << orbit_csv_row(sc, out.state, out.t, plan.columns) << '\n';
+  }
   if (file) file->commit();
   const OrbitRunReport rep{sc,           method,
                            out,          time_of(out.t),
@@ -119,6 +202,7 @@ int orbit_simulate(const std::string& path, const OrbitSimulateArgs& a) {
 
 int orbit_integrals(const std::string& path, bool json) {
   const io::OrbitScenario sc = io::load_orbit_scenario(path);
+  warn_units(sc);
   const OrbitValues v = orbit_values(sc, sc.initial, start_variable(sc));
   io::Json j;
   j["integrals"] = orbit_values_json(sc, v);

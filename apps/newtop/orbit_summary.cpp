@@ -1,6 +1,11 @@
 #include "orbit_summary.hpp"
 
 #include <cmath>
+#include <numbers>
+
+#include "cli.hpp"
+#include "newtop/orbit/debra_delp.hpp"
+#include "newtop/orbit/lvlh.hpp"
 
 namespace newtop::app {
 namespace {
@@ -10,6 +15,11 @@ const EllipticOrbit* ellipse(const io::OrbitScenario& sc) {
 }
 
 }  // namespace
+
+void warn_units(const io::OrbitScenario& sc) {
+  if (!sc.mu || !sc.radius) return;
+  for (const std::string& w : orbit_unit_warnings(*sc.mu, *sc.radius)) warn(sc.source + ": " + w);
+}
 
 double start_variable(const io::OrbitScenario& sc) {
   const EllipticOrbit* e = ellipse(sc);
@@ -45,11 +55,25 @@ io::Json orbit_model_json(const io::OrbitScenario& sc) {
     j["orbit"] = {{"kind", "elliptic"},
                   {"eccentricity", e->eccentricity},
                   {"mean_motion", e->mean_motion},
-                  {"true_anomaly", e->true_anomaly0}};
+                  {"true_anomaly", e->true_anomaly0},
+                  {"period", 2 * std::numbers::pi / e->mean_motion}};
   } else {
     const auto& c = std::get<CircularOrbit>(sc.orbit);
     j["orbit"] = {{"kind", "circular"}, {"rate", c.rate}, {"lambda", c.lambda_}};
+    if (c.rate > 0) {
+      j["orbit"]["period"] = 2 * std::numbers::pi / c.rate;
+      io::Json modes = io::Json::array();
+      for (const LibrationMode& m : libration_modes(sc.body, sc.initial, c.rate)) {
+        modes.push_back({{"mode", m.name},
+                         {"sigma", {m.sigma.real(), m.sigma.imag()}},
+                         {"oscillating", m.oscillating},
+                         {"frequency", m.frequency},
+                         {"period", m.period}});
+      }
+      j["orbit"]["libration_modes"] = modes;
+    }
   }
+  j["units"] = sc.mu ? orbit_units(*sc.mu) : "those of the scenario (rate in rad per time unit)";
   return j;
 }
 
@@ -59,12 +83,25 @@ void print_orbit_model(std::ostream& os, const io::OrbitScenario& sc) {
   if (const EllipticOrbit* e = ellipse(sc)) {
     os << "orbit     elliptic   e = " << format_number(e->eccentricity)
        << "   n = " << format_number(e->mean_motion)
-       << "   nu0 = " << format_number(e->true_anomaly0) << "\n";
+       << "   nu0 = " << format_number(e->true_anomaly0)
+       << "   period = " << format_number(2 * std::numbers::pi / e->mean_motion) << "\n";
   } else {
     const auto& c = std::get<CircularOrbit>(sc.orbit);
     os << "orbit     circular   rate = " << format_number(c.rate)
        << "   lambda = " << format_number(c.lambda_) << "\n";
+    if (c.rate > 0) {
+      os << "          period = " << format_number(2 * std::numbers::pi / c.rate) << "\n";
+      os << "modes     linear librations about the nearest rest orientation:";
+      for (const LibrationMode& m : libration_modes(sc.body, sc.initial, c.rate)) {
+        os << "  " << m.name << " "
+           << (m.oscillating ? format_number(m.frequency / c.rate) + " rate (period " +
+                                   format_number(m.period) + ")"
+                             : std::string("unstable"));
+      }
+      os << "\n";
+    }
   }
+  os << "units     " << (sc.mu ? orbit_units(*sc.mu) : "those of the scenario") << "\n";
 }
 
 io::Json orbit_values_json(const io::OrbitScenario& sc, const OrbitValues& v) {
@@ -76,14 +113,17 @@ io::Json orbit_values_json(const io::OrbitScenario& sc, const OrbitValues& v) {
   return j;
 }
 
-std::string orbit_csv_header(const io::OrbitScenario& sc) {
+std::string orbit_csv_header(const io::OrbitScenario& sc, OrbitAttitudeColumns a) {
   return std::string("t,") + (sc.circular() ? "" : "nu,") +
          "omega1,omega2,omega3,gamma1,gamma2,gamma3,normal1,normal2,normal3," +
-         (sc.circular() ? "jacobi" : "hamiltonian_nu") + ",casimir_error";
+         (sc.circular() ? "jacobi" : "hamiltonian_nu") + ",casimir_error" +
+         (a.quaternion ? ",q0,q1,q2,q3" : "") + (a.euler == 321 ? ",roll,pitch,yaw" : "") +
+         (a.euler == 313 ? ",euler313_phi,euler313_theta,euler313_psi" : "");
 }
 
-std::string orbit_csv_row(const io::OrbitScenario& sc, const OrbitState& s, double x) {
-  const double t = orbit_time(sc, x, sc.integrate.t0);
+std::string orbit_csv_row(const io::OrbitScenario& sc, const OrbitState& s, double x,
+                          OrbitAttitudeColumns a, std::optional<double> t_row) {
+  const double t = t_row ? *t_row : orbit_time(sc, x, sc.integrate.t0);
   std::string row = format_number(t) + ",";
   if (!sc.circular()) row += format_number(x) + ",";
   const Vec3 w = omega(sc.body, s);
@@ -91,7 +131,16 @@ std::string orbit_csv_row(const io::OrbitScenario& sc, const OrbitState& s, doub
     for (int i = 0; i < 3; ++i) row += format_number((*v)[i]) + ",";
   }
   const OrbitValues v = orbit_values(sc, s, x);
-  return row + format_number(v.integral) + "," + format_number(v.casimir);
+  row += format_number(v.integral) + "," + format_number(v.casimir);
+  if (a.quaternion || a.euler) {
+    const Mat3 C = lvlh_to_body(s);
+    if (a.quaternion) {
+      for (const double c : scalar_first(lvlh_quaternion(C))) row += "," + format_number(c);
+    }
+    const Vec3 e = a.euler == 321 ? roll_pitch_yaw(C) : lvlh_euler_313(C);
+    for (int i = 0; a.euler && i < 3; ++i) row += "," + format_number(e[i]);
+  }
+  return row;
 }
 
 io::Json orbit_simulation_json(const OrbitRunReport& r) {
@@ -99,7 +148,7 @@ io::Json orbit_simulation_json(const OrbitRunReport& r) {
   io::Json j;
   j["scenario"] = r.scenario.source;
   j["method"] = r.method.name;
-  if (r.method.name == "rkf78") {
+  if (is_orbit_adaptive_method(r.method.name)) {
     j["tolerance"] = {{"abs", r.method.abs_tol}, {"rel", r.method.rel_tol}};
   } else {
     j["step"] = r.method.step;
@@ -130,8 +179,8 @@ void print_orbit_simulation(std::ostream& os, const OrbitRunReport& r) {
   os << "newtop simulate " << r.scenario.source << "\n";
   print_orbit_model(os, r.scenario);
   os << "method    " << r.method.name
-     << (r.method.name == "rkf78" ? "  tol = " + format_number(r.method.abs_tol)
-                                  : "  step = " + format_number(r.method.step))
+     << (is_orbit_adaptive_method(r.method.name) ? "  tol = " + format_number(r.method.abs_tol)
+                                                 : "  step = " + format_number(r.method.step))
      << "\noutcome   " << to_string(r.outcome.status) << " at t = " << format_number(r.t_final)
      << " after " << r.outcome.steps
      << " steps\nfinal     omega = " << format_vector(omega(r.scenario.body, s))

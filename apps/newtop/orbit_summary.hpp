@@ -20,6 +20,10 @@ struct OrbitValues {
   OrbitCasimirs casimirs{1.0, 1.0, 0.0};
 };
 
+/// The unit-mix warnings of the scenario's μ and radius (orbit_unit_warnings), one line each on
+/// stderr unless --quiet.
+void warn_units(const io::OrbitScenario& sc);
+
 /// t0 on a circular orbit, ν0 on an elliptic one (the integrators' independent variable).
 double start_variable(const io::OrbitScenario& sc);
 /// The time at the integrators' variable x (t itself, or t0 + t(ν) − t(ν0) by Kepler's equation).
@@ -30,10 +34,19 @@ io::Json orbit_model_json(const io::OrbitScenario& sc);
 void print_orbit_model(std::ostream& os, const io::OrbitScenario& sc);
 io::Json orbit_values_json(const io::OrbitScenario& sc, const OrbitValues& v);
 
+/// The attitude columns of an orbit CSV (LVLH, newtop/orbit/lvlh.hpp).
+struct OrbitAttitudeColumns {
+  bool quaternion = false;  ///< q0,q1,q2,q3 of C(body←LVLH), q0 ≥ 0
+  int euler = 0;            ///< 321: roll,pitch,yaw; 313: euler313_phi,euler313_theta,euler313_psi
+};
+
 /// `t,omega1,omega2,omega3,gamma1,gamma2,gamma3,normal1,normal2,normal3,jacobi|hamiltonian_nu,
-/// casimir_error` (elliptic orbits add `nu` after t).
-std::string orbit_csv_header(const io::OrbitScenario& sc);
-std::string orbit_csv_row(const io::OrbitScenario& sc, const OrbitState& s, double t);
+/// casimir_error` (elliptic orbits add `nu` after t), then the attitude columns asked for.
+std::string orbit_csv_header(const io::OrbitScenario& sc, OrbitAttitudeColumns a = {});
+/// The row at the integrator's variable x (t, or ν on an ellipse); `t` is the row's time when
+/// given (an output time asked for), else the time of x.
+std::string orbit_csv_row(const io::OrbitScenario& sc, const OrbitState& s, double x,
+                          OrbitAttitudeColumns a = {}, std::optional<double> t = std::nullopt);
 
 struct OrbitRunReport {
   const io::OrbitScenario& scenario;

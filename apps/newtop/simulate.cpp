@@ -29,6 +29,7 @@ struct SimulateArgs {
   std::optional<std::string> method, split, out, times;
   std::optional<int> euler;
   std::optional<std::int64_t> every;
+  bool attitude = false;
   bool json = false;
 };
 
@@ -178,11 +179,11 @@ void print_report(const SimulateArgs& a, const io::Scenario& sc, SimulationRepor
 int run_in(const SimulateArgs& a, const io::Scenario& sc) {
   const Model& model = sc.model;
   const RunPlan plan = make_plan(a, sc);
-  if (a.euler && !sc.attitude) {
-    throw InputError(
-        "--euler: expected a scenario with an attitude ([initial] quaternion, "
-        "rotation_matrix, euler_321 or euler_313), found none in " +
-        sc.source);
+  if ((a.euler || a.attitude) && !sc.attitude) {
+    throw InputError(std::string(a.euler ? "--euler" : "--attitude") +
+                     ": expected a scenario with an attitude ([initial] quaternion, "
+                     "rotation_matrix, euler_321 or euler_313), found none in " +
+                     sc.source);
   }
   std::unique_ptr<io::AtomicFile> file;
   std::unique_ptr<io::CsvTrajectory> csv;
@@ -217,8 +218,13 @@ int run_in(const SimulateArgs& a, const io::Scenario& sc) {
 }
 
 int run(const SimulateArgs& a) {
+  if (a.out && a.out->size() >= 3 && a.out->substr(a.out->size() - 3) == ".h5") {
+    throw InputError("--out: expected a CSV file name, found " + *a.out +
+                     ": simulate writes CSV trajectories (HDF5 is written by sweep)");
+  }
   if (io::is_orbit_scenario(a.scenario)) {
-    return orbit_simulate(a.scenario, {a.t_end, a.step, a.tol, a.method, a.out, a.every, a.json});
+    return orbit_simulate(a.scenario, {a.t_end, a.step, a.tol, a.dt_out, a.method, a.out, a.times,
+                                       a.split, a.every, a.euler, a.attitude, a.json});
   }
   const io::Scenario sc = io::load_scenario(a.scenario);
   const InterruptGuard guard;
@@ -251,6 +257,9 @@ const RegisterCommand reg{Command{
       sub.add_option("--euler", a->euler,
                      "with an attitude: add the Euler angles 321 (psi, theta, phi) or 313 (phi, "
                      "theta, psi) to the CSV (321 or 313)");
+      sub.add_flag("--attitude", a->attitude,
+                   "write the attitude q0..q3 (with an attitude; on an orbit: LVLH -> body, see "
+                   "newtop --help)");
       sub.add_flag("--json", a->json, "print one JSON object instead of the summary");
       return [a] { return run(*a); };
     }}};

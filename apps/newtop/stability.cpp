@@ -137,12 +137,12 @@ int run(const StabilityArgs& a) {
   if (a.scenario.empty())
     throw InputError("scenario: missing: give a scenario file (or --diagram)");
   if (io::is_orbit_scenario(a.scenario)) {
-    if (a.axis || a.omega || a.scan_omega || a.scan || a.out || a.equilibrium) {
+    if (a.axis || a.omega || a.scan_omega || a.scan || a.out) {
       throw InputError(
-          "--axis, --omega, --scan-omega, --scan, --out, --equilibrium: not available on an orbit "
-          "scenario (its initial state must be a relative equilibrium)");
+          "--axis, --omega, --scan-omega, --scan, --out: not available on an orbit scenario (its "
+          "initial state, or --equilibrium K, must be a relative equilibrium)");
     }
-    return orbit_stability(a.scenario, a.json);
+    return orbit_stability(a.scenario, a.json, a.equilibrium);
   }
   // Every option is checked before any work is done.
   if (a.scan && a.scan_omega) {

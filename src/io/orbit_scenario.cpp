@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "file_check.hpp"
+#include "newtop/orbit/lvlh.hpp"
 #include "toml_parse.hpp"
 #include "toml_reader.hpp"
 
@@ -22,8 +23,9 @@ const std::vector<std::string> kBodyKeys{"inertia", "inertia_tensor", "mass", "c
                                          "gyrostat"};
 const std::vector<std::string> kOrbitKeys{
     "kind", "mu", "radius", "rate", "semi_major_axis", "eccentricity", "true_anomaly"};
-const std::vector<std::string> kInitialKeys{"omega",     "gamma",          "normal",   "quaternion",
-                                            "euler_321", "omega_relative", "normalize"};
+const std::vector<std::string> kInitialKeys{"omega",           "gamma",          "normal",
+                                            "quaternion",      "euler_321",      "roll_pitch_yaw",
+                                            "lvlh_quaternion", "omega_relative", "normalize"};
 const std::vector<std::string> kIntegrateKeys{"method", "step", "tol", "t_end", "t0", "max_steps"};
 const std::vector<std::string> kOutputKeys{"file", "every"};
 
@@ -105,38 +107,55 @@ Mat3 euler_321(const Vec3& a) {
 }
 
 /// quaternion = [w, x, y, z] (scalar first), unit to kUnitTolerance unless normalize = true.
-Eigen::Quaterniond read_quaternion(const toml::table& t, TableReader& r, bool normalize) {
-  const toml::node& node = *t.get("quaternion");
+Eigen::Quaterniond read_quaternion(const toml::table& t, TableReader& r, bool normalize,
+                                   const std::string& key = "quaternion") {
+  const toml::node& node = *t.get(key);
   const toml::array* a = node.as_array();
   if (!a || a->size() != 4) {
-    r.fail("quaternion", "expected an array of 4 numbers [w, x, y, z], found " + describe(node));
+    r.fail(key, "expected an array of 4 numbers [w, x, y, z], found " + describe(node));
   }
   Eigen::Vector4d v;
   for (int i = 0; i < 4; ++i) {
     const toml::node& x = *a->get(static_cast<std::size_t>(i));
     if (!x.is_number() || !std::isfinite(x.value<double>().value())) {
-      r.fail("quaternion", "expected 4 finite numbers [w, x, y, z], found " + describe(node));
+      r.fail(key, "expected 4 finite numbers [w, x, y, z], found " + describe(node));
     }
     v[i] = x.value<double>().value();
   }
   const double norm = v.norm();
   if (norm == 0.0 || (!normalize && std::abs(norm - 1.0) > kUnitTolerance)) {
-    r.fail("quaternion",
-           "expected a unit quaternion (|q| = 1 to 1e-12), found |q| = " + format_number(norm) +
-               "; add normalize = true to [initial] to rescale it");
+    r.fail(key, "expected a unit quaternion (|q| = 1 to 1e-12), found |q| = " +
+                    format_number(norm) + "; add normalize = true to [initial] to rescale it");
   }
   v /= norm;
   return Eigen::Quaterniond(v[0], v[1], v[2], v[3]);
 }
 
+/// C(body←LVLH) from roll_pitch_yaw or lvlh_quaternion (docs/orbit.md §11), as the orbital
+/// frame (columns e_r = γ, e_t = n × γ, e_n = n) in the user's body components.
+Mat3 lvlh_frame(const toml::table& t, TableReader& r, bool normalize) {
+  const Mat3 C =
+      r.has("roll_pitch_yaw")
+          ? body_from_roll_pitch_yaw(r.vec3("roll_pitch_yaw"))
+          : Mat3(
+                read_quaternion(t, r, normalize, "lvlh_quaternion").toRotationMatrix().transpose());
+  Mat3 F;
+  F.col(0) = -C.col(2);
+  F.col(1) = C.col(0);
+  F.col(2) = -C.col(1);
+  return F;
+}
+
 OrbitState read_initial(const toml::table& t, TableReader& r, const Body& body, double rate) {
   const Mat3& P = body.principal_axes();  // user frame → principal axes: Pᵀ
   const int q = r.has("quaternion"), e = r.has("euler_321");
+  const int l = r.has("roll_pitch_yaw") + r.has("lvlh_quaternion");
   const int direct = r.has("gamma") || r.has("normal") || r.has("omega");
-  if (q + e + direct != 1) {
-    r.fail(q ? "quaternion" : (e ? "euler_321" : "gamma"),
-           "expected exactly one of (omega, gamma, normal), quaternion or euler_321, found " +
-               std::string(q + e + direct == 0 ? "none" : "more than one"));
+  if (q + e + l + direct != 1) {
+    r.fail(q ? "quaternion" : (e ? "euler_321" : (l ? "roll_pitch_yaw" : "gamma")),
+           "expected exactly one of (omega, gamma, normal), quaternion, euler_321, "
+           "roll_pitch_yaw or lvlh_quaternion, found " +
+               std::string(q + e + l + direct == 0 ? "none" : "more than one"));
   }
   if (direct) {
     const Vec3 w = P.transpose() * r.vec3("omega");
@@ -151,6 +170,11 @@ OrbitState read_initial(const toml::table& t, TableReader& r, const Body& body, 
   }
   const Vec3 w_rel = r.optional_vec3("omega_relative").value_or(Vec3::Zero());
   const bool normalize = r.boolean("normalize", false);
+  if (l) {
+    const Mat3 F = lvlh_frame(t, r, normalize);
+    r.finish();
+    return state_from_relative(body, P.transpose() * F, P.transpose() * w_rel, rate);
+  }
   // Body axes in orbital components (the user's body frame).
   const Mat3 R =
       q ? read_quaternion(t, r, normalize).toRotationMatrix() : euler_321(r.vec3("euler_321"));
@@ -222,7 +246,12 @@ OrbitScenario parse_orbit_scenario(const std::string& text, const std::string& s
   TableReader body_reader(*section("body", true), source, "body");
   const Body body = read_orbit_body(body_reader);
   TableReader orbit_reader(*section("orbit", true), source, "orbit");
-  OrbitScenario s{source, body, read_orbit(orbit_reader), {}, {}, {}};
+  OrbitScenario s{source, body, read_orbit(orbit_reader), {}, {}, {}, {}, {}};
+  if (const toml::table* o = doc["orbit"].as_table()) {
+    s.mu = (*o)["mu"].value<double>();
+    s.radius = (*o)["radius"].value<double>();
+    if (!s.radius) s.radius = (*o)["semi_major_axis"].value<double>();
+  }
   const toml::table* init = section("initial", true);
   TableReader initial(*init, source, "initial");
   s.initial = read_initial(*init, initial, body, s.rate_at_start());

@@ -1,6 +1,7 @@
 #include "newtop/orbit/debra_delp.hpp"
 
 #include <cmath>
+#include <numbers>
 
 namespace newtop {
 
@@ -100,6 +101,33 @@ std::vector<DebraDelpPoint> debra_delp_scan(double k_R_lo, double k_R_hi, int n_
     }
   }
   return out;
+}
+
+}  // namespace newtop
+
+namespace newtop {
+
+std::array<LibrationMode, 3> libration_modes(const Body& body, const OrbitState& s, double rate) {
+  Eigen::Index p = 0, y = 0;
+  s.normal.cwiseAbs().maxCoeff(&p);
+  s.gamma.cwiseAbs().maxCoeff(&y);
+  const Eigen::Index r = 3 - p - y;  // the third axis (p ≠ y for a physical state)
+  const Vec3& I = body.inertia();
+  const double A = I[r], B = I[p], C = I[y];
+  const double kR = (B - C) / A, kY = (B - A) / C, kP = (A - C) / B;
+  const double b = 1 + 3 * kR + kR * kY, c = 4 * kR * kY;
+  const std::complex<double> root = std::sqrt(std::complex<double>(b * b - 4 * c));
+  auto mode = [&](const char* name, std::complex<double> sigma) {
+    LibrationMode m{name, sigma};
+    m.oscillating = sigma.imag() == 0.0 && sigma.real() < 0.0;
+    if (m.oscillating) {
+      m.frequency = rate * std::sqrt(-sigma.real());
+      m.period = 2 * std::numbers::pi / m.frequency;
+    }
+    return m;
+  };
+  return {mode("pitch", -3 * kP), mode("roll-yaw", 0.5 * (-b + root)),
+          mode("roll-yaw", 0.5 * (-b - root))};
 }
 
 }  // namespace newtop

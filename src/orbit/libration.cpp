@@ -30,6 +30,21 @@ PitchProblem pitch_problem(const Body& body, const EllipticOrbit& orbit) {
   return pitch_problem(orbit.eccentricity, (I.y() - I.x()) / I.z());
 }
 
+PitchFrame pitch_frame(const Body& body, const OrbitState& s) {
+  Eigen::Index a = 2;
+  s.normal.cwiseAbs().maxCoeff(&a);
+  const int ax = static_cast<int>(a);
+  const double sign = s.normal[ax] < 0 ? -1.0 : 1.0;
+  Mat3 P = Mat3::Zero();
+  P(0, (ax + 1) % 3) = 1.0;
+  P(1, (ax + 2) % 3) = sign;
+  P(2, ax) = sign;
+  const Vec3 I = (P * body.inertia()).cwiseAbs();
+  const Body turned =
+      Body::from_principal(I, body.mass(), P * body.center_of_mass(), P * body.gyrostat());
+  return {turned, {P * s.m, P * s.gamma, P * s.normal}, ax};
+}
+
 Vec2 pitch_state(const Body& body, const EllipticOrbit& orbit, const OrbitState& s, double nu,
                  double tolerance) {
   const Vec3 w = omega(body, s);

@@ -125,4 +125,37 @@ double true_anomaly_at(const EllipticOrbit& o, double t) {
   return E + 2.0 * std::atan(b * std::sin(E) / (1.0 - b * std::cos(E)));
 }
 
+namespace {
+
+/// Earth's μ in m³/s² (scale 1) or in km³/s² (scale 1e-9), within 1 %.
+bool is_earth_mu(double mu, double scale) { return std::abs(mu / (kEarthMu * scale) - 1.0) < 0.01; }
+
+}  // namespace
+
+std::string orbit_units(double mu) {
+  if (is_earth_mu(mu, 1.0)) return "m, s (SI; Earth's mu in m^3/s^2)";
+  if (is_earth_mu(mu, 1e-9)) return "km, s (Earth's mu in km^3/s^2)";
+  return "the length unit of the radius and the time unit implied by mu";
+}
+
+std::vector<std::string> orbit_unit_warnings(double mu, double radius) {
+  std::vector<std::string> w;
+  const double rate = std::sqrt(mu / (radius * radius * radius));
+  if (rate > 1.0) {
+    w.push_back("orbit: rate sqrt(mu/R^3) = " + format_number(rate) +
+                " rad per time unit (a period of " + format_number(2 * std::numbers::pi / rate) +
+                "): mu and the radius look like a unit mix (mu in m^3/s^2 with R in km?)");
+  }
+  for (const double scale : {1.0, 1e-9}) {
+    const double earth = kEarthRadius * (scale == 1.0 ? 1.0 : 1e-3);
+    if (is_earth_mu(mu, scale) && radius < earth) {
+      w.push_back("orbit: radius " + format_number(radius) + " is below Earth's (" +
+                  format_number(earth) +
+                  ") for Earth's mu: an altitude given as a radius? (radius = Earth's radius + "
+                  "altitude)");
+    }
+  }
+  return w;
+}
+
 }  // namespace newtop

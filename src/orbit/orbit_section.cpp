@@ -94,9 +94,9 @@ phase::SectionRun orbit_section(const MethodSettings& method, const CircularOrbi
                                 std::vector<OrbitCrossing>& out, OrbitSectionDrift& drift,
                                 const std::function<void(double)>& on_step) {
   auto jacobi = [&](const OrbitState& x) { return jacobi_integral(model, x); };
-  if (method.name == "rkf78") {
+  if (is_orbit_adaptive_method(method.name)) {
     auto step = [&](double t, const OrbitState& x, double tau) {
-      return rkf78_step(model, x, t, tau);
+      return adaptive_formula_step(method.name, model, x, t, tau);
     };
     return section_with(method, model, step, jacobi, g, settings, orbit, x0, t0, t1, max_steps, out,
                         drift, on_step);
@@ -119,9 +119,9 @@ phase::SectionRun orbit_section(const MethodSettings& method, const EllipticOrbi
                                 std::int64_t max_steps, std::vector<OrbitCrossing>& out,
                                 OrbitSectionDrift& drift,
                                 const std::function<void(double)>& on_step) {
-  if (method.name == "rkf78") {
+  if (is_orbit_adaptive_method(method.name)) {
     auto step = [&](double nu, const OrbitState& x, double tau) {
-      return rkf78_step(model, x, nu, tau);
+      return adaptive_formula_step(method.name, model, x, nu, tau);
     };
     return section_with(method, model, step, nullptr, g, settings, orbit, x0, nu0, nu1, max_steps,
                         out, drift, on_step);

@@ -1,18 +1,12 @@
 #include <array>
-#include <cmath>
 #include <string>
+#include <utility>
 
+#include "newtop/integrate/sub_flows.hpp"
 #include "newtop/orbit/orbit_integrate.hpp"
 
 namespace newtop {
 namespace {
-
-/// sin θ and cos θ − 1 = −2 sin²(θ/2) (no cancellation for small θ).
-void sin_cosm1(double theta, double& s, double& cm1) {
-  const double sh = std::sin(0.5 * theta), ch = std::cos(0.5 * theta);
-  s = 2.0 * sh * ch;
-  cm1 = -2.0 * sh * sh;
-}
 
 /// Body axes by increasing moment: least, middle, largest.
 std::array<int, 3> axes_by_moment(const Body& body) {
@@ -49,46 +43,6 @@ std::vector<OrbitStage> make_program(const CompositionTable& table, bool kick_ou
     push(kick_outside, 0.5 * g);
   }
   return p;
-}
-
-void check_run(double t0, double t1, double step) {
-  if (!std::isfinite(step) || !(step > 0)) {
-    throw InputError("step: expected a finite number > 0, found " + format_number(step));
-  }
-  if (!std::isfinite(t0) || !std::isfinite(t1)) {
-    throw InputError("time span: expected finite ends, found [" + format_number(t0) + ", " +
-                     format_number(t1) + "]");
-  }
-}
-
-bool finite(const OrbitState& x) {
-  return x.m.allFinite() && x.gamma.allFinite() && x.normal.allFinite();
-}
-
-template <class StepFn>
-OrbitOutcome run_fixed(OrbitState x, double t0, double t1, double step, const OrbitObserver& obs,
-                       StepFn&& step_fn) {
-  check_run(t0, t1, step);
-  OrbitOutcome out{Status::finished, t0, x, 0, 0};
-  if (obs) obs(t0, x);
-  const double span = t1 - t0;
-  if (span == 0.0) return out;
-  const double n_real = std::ceil(std::abs(span) / step);
-  const auto n = static_cast<std::int64_t>(n_real);
-  const double h = span / n_real;
-  for (std::int64_t i = 1; i <= n; ++i) {
-    const double t_start = t0 + static_cast<double>(i - 1) * h;
-    step_fn(x, t_start, h);
-    if (!finite(x)) {
-      out.status = Status::non_finite;
-      return out;
-    }
-    out.t = (i == n) ? t1 : t0 + static_cast<double>(i) * h;
-    out.state = x;
-    out.steps = i;
-    if (obs) obs(out.t, x);
-  }
-  return out;
 }
 
 }  // namespace
@@ -159,18 +113,40 @@ void OrbitSplittingStepper::step(const EllipticOrbitModel& model, OrbitState& x,
   }
 }
 
+namespace {
+
+/// The engine's fixed-step driver at the nominal step `step`.
+template <class M>
+OrbitOutcome run_fixed(const OrbitSplittingStepper& stepper, const M& model, const OrbitState& x,
+                       double a, double b, double step, const OrbitObserver& observer) {
+  IntegrateOptions options;
+  options.step = step;
+  if (!observer) return integrate(stepper, model, x, a, b, options);
+  return integrate(stepper, model, x, a, b, options, observer);
+}
+
+}  // namespace
+
 OrbitOutcome integrate(const OrbitSplittingStepper& stepper, const CircularOrbitModel& model,
                        OrbitState x, double t0, double t1, double step,
                        const OrbitObserver& observer) {
-  return run_fixed(x, t0, t1, step, observer,
-                   [&](OrbitState& y, double, double h) { stepper.step(model, y, h); });
+  return run_fixed(stepper, model, x, t0, t1, step, observer);
 }
 
 OrbitOutcome integrate(const OrbitSplittingStepper& stepper, const EllipticOrbitModel& model,
                        OrbitState x, double nu0, double nu1, double step,
                        const OrbitObserver& observer) {
-  return run_fixed(x, nu0, nu1, step, observer,
-                   [&](OrbitState& y, double nu, double h) { stepper.step(model, y, nu, h); });
+  return run_fixed(stepper, model, x, nu0, nu1, step, observer);
+}
+
+void check_state(const OrbitState& x) {
+  const std::pair<const char*, const Vec3*> parts[] = {
+      {"m", &x.m}, {"gamma", &x.gamma}, {"normal", &x.normal}};
+  for (const auto& [name, v] : parts) {
+    if (!v->allFinite()) {
+      throw InputError(std::string(name) + ": expected finite numbers, found " + format_vector(*v));
+    }
+  }
 }
 
 }  // namespace newtop

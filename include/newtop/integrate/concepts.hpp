@@ -10,11 +10,15 @@
 namespace newtop {
 
 /// A fixed-step one-step method: `order()` and `step(model, x, h)` advancing x by h in place (x a
-/// State, or an OrientedState when X says so).
+/// State, or an OrientedState when X says so, or the state of a model with one of its own); a
+/// stepper of a non-autonomous model takes the independent variable at the start of the step,
+/// `step(model, x, t, h)`.
 template <class S, class M, class X = State>
-concept FixedStepper = requires(S s, const S cs, const M& model, X& x, double h) {
+concept FixedStepper = requires(S s, const S cs, const M& model, X& x, double t, double h) {
   { cs.order() } -> std::convertible_to<int>;
-  s.step(model, x, h);
+  requires requires { s.step(model, x, h); } || requires {
+    s.step(model, x, t, h);
+  };
 };
 
 /// Adaptive methods: a trial step that gives NaN or inf is rejected and retried this much shorter

@@ -25,15 +25,34 @@ namespace newtop {
 
 /// An observer that records nothing.
 struct NoObserver {
-  void operator()(double, const State&) const {}
+  template <class X>
+  void operator()(double, const X&) const {}
+};
+
+/// The Outcome type of a run on states X: Outcome for State and OrientedState; a model with a
+/// state of its own specialises it (its outcome has at least status, t, state, steps, rejected and
+/// last_step).
+template <class X>
+struct OutcomeFor {
+  using type = Outcome;
+};
+template <class X>
+using OutcomeOf = typename OutcomeFor<X>::type;
+
+/// A model that names its own state type (M::state_type): a model other than BasicModel<F> that
+/// runs through the same driver, with check_state(x) and is_finite(x) for its state and
+/// OutcomeFor specialised (the engine knows nothing else of it).
+template <class M>
+concept ModelWithState = requires {
+  typename M::state_type;
 };
 
 namespace detail {
 
 /// The outcome of a run that has not moved from (t0, x).
-template <PhaseState X>
-Outcome start_outcome(double t0, const X& x) {
-  Outcome out;
+template <class X>
+OutcomeOf<X> start_outcome(double t0, const X& x) {
+  OutcomeOf<X> out;
   out.t = t0;
   out.state = x;
   if constexpr (kOriented<X>) out.attitude = x.q;
@@ -41,16 +60,28 @@ Outcome start_outcome(double t0, const X& x) {
 }
 
 /// Records the accepted state x in `out`.
-template <PhaseState X>
-void record(Outcome& out, const X& x) {
+template <class X, class Out>
+void record(Out& out, const X& x) {
   out.state = x;
   if constexpr (kOriented<X>) out.attitude = x.q;
 }
 
+/// One fixed step of h from (t, x): step(model, x, t, h) for a stepper of a non-autonomous model
+/// (one that needs the independent variable at the start of the step), step(model, x, h)
+/// otherwise.
+template <class S, class M, class X>
+void advance(S& stepper, const M& model, X& x, double t, double h) {
+  if constexpr (requires { stepper.step(model, x, t, h); }) {
+    stepper.step(model, x, t, h);
+  } else {
+    stepper.step(model, x, h);
+  }
+}
+
 /// The stepper's largest renormalisation of the attitude, into `out`.
-template <class S>
-void record_projection(Outcome& out, const S& stepper) {
-  if constexpr (requires { stepper.attitude_projection(); }) {
+template <class S, class Out>
+void record_projection(Out& out, const S& stepper) {
+  if constexpr (requires { out.attitude_projection = stepper.attitude_projection(); }) {
     out.attitude_projection = stepper.attitude_projection();
   }
 }
@@ -67,16 +98,16 @@ void notify(Obs& observer, double t, const X& x, const Step& step) {
 
 /// n equal steps from (t0, x) to t1 (the last one lands exactly on t1), continuing the counts in
 /// `out`. Returns false when the run stopped (non-finite state or step limit; `out` says which).
-template <class S, class M, class X, class Obs>
+template <class S, class M, class X, class Out, class Obs>
 bool fixed_steps(S& stepper, const M& model, X& x, double t0, double t1, std::int64_t n,
-                 const IntegrateOptions& opt, Outcome& out, Obs& observer) {
+                 const IntegrateOptions& opt, Out& out, Obs& observer) {
   const double h = (t1 - t0) / static_cast<double>(n);
   for (std::int64_t i = 1; i <= n; ++i) {
     if (out.steps >= opt.max_steps) {
       out.status = Status::step_limit;
       return false;
     }
-    stepper.step(model, x, h);
+    advance(stepper, model, x, t0 + static_cast<double>(i - 1) * h, h);
     const double t = (i == n) ? t1 : t0 + static_cast<double>(i) * h;
     if (!is_finite(x)) {
       out.status = Status::non_finite;  // out keeps the last finite state and its time
@@ -93,40 +124,32 @@ bool fixed_steps(S& stepper, const M& model, X& x, double t0, double t1, std::in
 
 }  // namespace detail
 
-/// Fixed-step driver. Throws InputError for non-finite times or state, a step that is not a finite
-/// number > 0, or a step count beyond kMaxStepCount.
-template <class S, Field F, class Obs = NoObserver, PhaseState X = State>
-requires FixedStepper<S, BasicModel<F>, X> Outcome integrate(S& stepper, const BasicModel<F>& model,
-                                                             X x, double t0, double t1,
-                                                             const IntegrateOptions& opt,
-                                                             Obs&& observer = {}) {
+namespace detail {
+
+/// The fixed-step run of integrate() on any model M and state X.
+template <class S, class M, class X, class Obs>
+OutcomeOf<X> run_fixed(S& stepper, const M& model, X x, double t0, double t1,
+                       const IntegrateOptions& opt, Obs& observer) {
   check_options(opt);
   check_state(x);
   const std::int64_t n = fixed_step_count(t0, t1, opt.step);
-  Outcome out = detail::start_outcome(t0, x);
+  OutcomeOf<X> out = start_outcome(t0, x);
   observer(t0, x);
-  if (n > 0) detail::fixed_steps(stepper, model, x, t0, t1, n, opt, out, observer);
-  detail::record_projection(out, stepper);
+  if (n > 0) fixed_steps(stepper, model, x, t0, t1, n, opt, out, observer);
+  record_projection(out, stepper);
   return out;
 }
 
-/// Adaptive driver: the first trial step is the stepper's estimate from the problem (or
-/// opt.initial_step), a trial that gives NaN or inf is rejected and retried kNonFiniteShrink times
-/// shorter (only an accepted state counts; a run whose trials keep failing ends in
-/// step_size_underflow), and the last step is shortened to land exactly on t1. Throws InputError as
-/// the fixed-step driver does for bad times, state or options.
-template <class S, Field F, class Obs = NoObserver, PhaseState X = State>
-requires AdaptiveStepper<S, BasicModel<F>, X> Outcome integrate(S& stepper,
-                                                                const BasicModel<F>& model, X x,
-                                                                double t0, double t1,
-                                                                const IntegrateOptions& opt,
-                                                                Obs&& observer = {}) {
-  using Step = DenseStep<S, BasicModel<F>, X>;
+/// The adaptive run of integrate() on any model M and state X: the one adaptive driver loop.
+template <class S, class M, class X, class Obs>
+OutcomeOf<X> run_adaptive(S& stepper, const M& model, X x, double t0, double t1,
+                          const IntegrateOptions& opt, Obs& observer) {
+  using Step = DenseStep<S, M, X>;
   check_time_span(t0, t1);
   check_options(opt);
   check_state(x);
-  Outcome out = detail::start_outcome(t0, x);
-  detail::notify(observer, t0, x, Step{stepper, model, t0, t0, x});
+  OutcomeOf<X> out = start_outcome(t0, x);
+  notify(observer, t0, x, Step{stepper, model, t0, t0, x});
   const double span = t1 - t0;
   if (span == 0.0) return out;
   const double dir = span > 0 ? 1.0 : -1.0;
@@ -136,7 +159,7 @@ requires AdaptiveStepper<S, BasicModel<F>, X> Outcome integrate(S& stepper,
   while (dir * (t1 - t) > 0) {
     if (out.steps + out.rejected >= opt.max_steps) {
       out.status = Status::step_limit;
-      detail::record_projection(out, stepper);
+      record_projection(out, stepper);
       return out;
     }
     bool last = false;
@@ -147,7 +170,7 @@ requires AdaptiveStepper<S, BasicModel<F>, X> Outcome integrate(S& stepper,
     const double scale = std::max(std::abs(t), std::abs(span));
     if (!(std::abs(dt) >= opt.min_step_factor * scale)) {
       out.status = Status::step_size_underflow;
-      detail::record_projection(out, stepper);
+      record_projection(out, stepper);
       return out;
     }
     X trial = x;
@@ -167,12 +190,52 @@ requires AdaptiveStepper<S, BasicModel<F>, X> Outcome integrate(S& stepper,
     t = last ? t1 : t_trial;
     ++out.steps;
     out.t = t;
-    detail::record(out, x);
+    record(out, x);
     out.last_step = dt_tried;
-    detail::notify(observer, t, x, Step{stepper, model, t_old, t, x});
+    notify(observer, t, x, Step{stepper, model, t_old, t, x});
   }
-  detail::record_projection(out, stepper);
+  record_projection(out, stepper);
   return out;
+}
+
+}  // namespace detail
+
+/// Fixed-step driver. Throws InputError for non-finite times or state, a step that is not a finite
+/// number > 0, or a step count beyond kMaxStepCount.
+template <class S, Field F, class Obs = NoObserver, PhaseState X = State>
+requires FixedStepper<S, BasicModel<F>, X> Outcome integrate(S& stepper, const BasicModel<F>& model,
+                                                             X x, double t0, double t1,
+                                                             const IntegrateOptions& opt,
+                                                             Obs&& observer = {}) {
+  return detail::run_fixed(stepper, model, x, t0, t1, opt, observer);
+}
+
+/// Adaptive driver: the first trial step is the stepper's estimate from the problem (or
+/// opt.initial_step), a trial that gives NaN or inf is rejected and retried kNonFiniteShrink times
+/// shorter (only an accepted state counts; a run whose trials keep failing ends in
+/// step_size_underflow), and the last step is shortened to land exactly on t1. Throws InputError as
+/// the fixed-step driver does for bad times, state or options.
+template <class S, Field F, class Obs = NoObserver, PhaseState X = State>
+requires AdaptiveStepper<S, BasicModel<F>, X> Outcome integrate(S& stepper,
+                                                                const BasicModel<F>& model, X x,
+                                                                double t0, double t1,
+                                                                const IntegrateOptions& opt,
+                                                                Obs&& observer = {}) {
+  return detail::run_adaptive(stepper, model, x, t0, t1, opt, observer);
+}
+
+/// The same drivers on a model with a state of its own (ModelWithState): the same loops.
+template <class S, ModelWithState M, class Obs = NoObserver>
+requires FixedStepper<S, M, typename M::state_type> OutcomeOf<typename M::state_type> integrate(
+    S& stepper, const M& model, typename M::state_type x, double t0, double t1,
+    const IntegrateOptions& opt, Obs&& observer = {}) {
+  return detail::run_fixed(stepper, model, x, t0, t1, opt, observer);
+}
+template <class S, ModelWithState M, class Obs = NoObserver>
+requires AdaptiveStepper<S, M, typename M::state_type> OutcomeOf<typename M::state_type> integrate(
+    S& stepper, const M& model, typename M::state_type x, double t0, double t1,
+    const IntegrateOptions& opt, Obs&& observer = {}) {
+  return detail::run_adaptive(stepper, model, x, t0, t1, opt, observer);
 }
 
 }  // namespace newtop

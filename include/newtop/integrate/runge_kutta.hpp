@@ -126,6 +126,20 @@ struct OdeSystem<QuadraticField, Y> {
   std::array<double, 3> inv_i{}, k{}, b{}, li{};
 };
 
+/// How a model's state meets odeint's numbers Y: the state type, the conversions and the vector
+/// field. BasicModel<F> on OdeState (State) and OrientedOdeState (OrientedState) here; a model with
+/// a state of its own specialises it for its own numbers, and the embedded pairs run on it.
+template <class M, class Y>
+struct OdeBinding;
+
+template <Field F, class Y>
+struct OdeBinding<BasicModel<F>, Y> {
+  using state_type = std::conditional_t<std::is_same_v<Y, OrientedOdeState>, OrientedState, State>;
+  using system = OdeSystem<F, Y>;
+  static Y to(const state_type& x) { return to_ode(x); }
+  static state_type from(const Y& y) { return from_ode(y); }
+};
+
 namespace detail {
 
 /// An odeint stepper class template applied to another state type: Stepper<Y0, …> → Stepper<Y>.
@@ -228,7 +242,8 @@ class EmbeddedRkCore {
       std::is_same_v<typename ErrorStepper::stepper_category,
                      boost::numeric::odeint::explicit_error_stepper_fsal_tag>;
   static constexpr bool kWithAttitude = std::is_same_v<Y, OrientedOdeState>;
-  using X = std::conditional_t<kWithAttitude, OrientedState, State>;
+  template <class M>
+  using X = typename OdeBinding<M, Y>::state_type;
   // The Hermite interpolant works on points of six numbers: a longer state is cut into pieces.
   static constexpr std::size_t kPoint = std::tuple_size_v<HermiteInterpolant::Point>;
   static constexpr std::size_t kPieces = (std::tuple_size_v<Y> + kPoint - 1) / kPoint;
@@ -239,17 +254,19 @@ class EmbeddedRkCore {
         rel_tol_(rel_tol),
         controlled_(boost::numeric::odeint::make_controlled(abs_tol, rel_tol, ErrorStepper())) {}
 
-  template <Field F>
-  double initial_step(const BasicModel<F>& model, const X& x, double t0, double t1) {
-    const OdeSystem<F, Y> sys{&model};
-    at_point(sys, to_ode(x), t0);
+  int order() const { return Order; }
+
+  template <class M>
+  double initial_step(const M& model, const X<M>& x, double t0, double t1) {
+    const typename OdeBinding<M, Y>::system sys{&model};
+    at_point(sys, OdeBinding<M, Y>::to(x), t0);
     return detail::starting_step(sys, y_, dydt_, t0, t1 - t0, abs_tol_, rel_tol_, Order);
   }
 
-  template <Field F>
-  bool try_step(const BasicModel<F>& model, X& x, double& t, double& dt) {
-    const OdeSystem<F, Y> sys{&model};
-    at_point(sys, to_ode(x), t);
+  template <class M>
+  bool try_step(const M& model, X<M>& x, double& t, double& dt) {
+    const typename OdeBinding<M, Y>::system sys{&model};
+    at_point(sys, OdeBinding<M, Y>::to(x), t);
     Y y_new, dydt_new;
     const double t_old = t, dt_tried = dt;
     boost::numeric::odeint::controlled_step_result r;
@@ -273,19 +290,21 @@ class EmbeddedRkCore {
     y_ = y_new;
     dydt_ = dydt_new;
     has_dydt_ = kFsal;  // Fehlberg 7(8): f(y_new) is computed when first needed
-    x = from_ode(y_new);
+    x = OdeBinding<M, Y>::from(y_new);
     return true;
   }
 
   /// The continuous extension of the last accepted step at t (between its ends); q renormalised.
-  template <Field F>
-  X dense_state(const BasicModel<F>& model, double t) {
+  template <class M>
+  X<M> dense_state(const M& model, double t) {
     Y y;
     if constexpr (kFsal) {
       controlled_.stepper().calc_state(t, y, last_.y_old, last_.dydt_old, last_.t_old, last_.y_new,
                                        last_.dydt_new, last_.t_new);
     } else {
-      if (hermite_id_ != step_id_) build_hermite(OdeSystem<F, Y>{&model});
+      if (hermite_id_ != step_id_) {
+        build_hermite(typename OdeBinding<M, Y>::system{&model});
+      }
       const double theta = (t - last_.t_old) / (last_.t_new - last_.t_old);
       for (std::size_t p = 0; p < kPieces; ++p) {
         const HermiteInterpolant::Point u = hermite_[p](theta);
@@ -294,7 +313,7 @@ class EmbeddedRkCore {
       }
     }
     if constexpr (kWithAttitude) renormalise(y);
-    return from_ode(y);
+    return OdeBinding<M, Y>::from(y);
   }
 
   double attitude_projection() const { return projection_; }
@@ -435,6 +454,12 @@ class EmbeddedRkStepper
  public:
   using Base::Base;
 };
+
+/// An embedded pair on the state of another model, whose odeint numbers Y (ErrorStepper's
+/// state_type) OdeBinding<M, Y> binds: the same AdaptiveStepper and DenseStepper, error control
+/// and continuous extension as EmbeddedRkStepper.
+template <class ErrorStepper, int Order>
+using EmbeddedRkOn = detail::EmbeddedRkCore<ErrorStepper, Order>;
 
 /// Dormand–Prince 5(4) (odeint's runge_kutta_dopri5), order 5.
 using Dopri5Stepper = EmbeddedRkStepper<boost::numeric::odeint::runge_kutta_dopri5<OdeState>, 5>;

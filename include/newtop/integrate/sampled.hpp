@@ -34,6 +34,37 @@ struct SamplingObserver {
   }
 };
 
+/// The sampled run on any model M and state X (the two integrate_sampled below).
+template <class S, class M, class X, class Sample, class Obs>
+OutcomeOf<X> run_sampled(S& stepper, const M& model, X x, double t0, double t1,
+                         const OutputTimes& times, const IntegrateOptions& opt, Sample& sample,
+                         Obs& observer) {
+  const double dir = t1 < t0 ? -1.0 : 1.0;
+  if constexpr (AdaptiveStepper<S, M, X>) {
+    SamplingObserver<Sample, Obs> obs{times, sample, observer, dir};
+    return run_adaptive(stepper, model, x, t0, t1, opt, obs);
+  } else {
+    check_options(opt);
+    check_state(x);
+    fixed_step_count(t0, t1, opt.step);  // checks the times and the step
+    OutcomeOf<X> out = start_outcome(t0, x);
+    observer(t0, x);
+    double a = t0;
+    for (std::int64_t k = 0; k <= times.size(); ++k) {
+      const double b = k < times.size() ? times[k] : t1;
+      if (b != a) {
+        const std::int64_t n = fixed_step_count(a, b, opt.step);
+        const bool go_on = fixed_steps(stepper, model, x, a, b, n, opt, out, observer);
+        record_projection(out, stepper);
+        if (!go_on) return out;
+        a = b;
+      }
+      if (k < times.size()) sample(k, b, x);
+    }
+    return out;
+  }
+}
+
 }  // namespace detail
 
 /// Runs from t0 to t1 as integrate() does and reports the state at every output time, in order, to
@@ -47,30 +78,17 @@ template <class S, Field F, class Sample, class Obs = NoObserver, PhaseState X =
 Outcome integrate_sampled(S& stepper, const BasicModel<F>& model, X x, double t0, double t1,
                           const OutputTimes& times, const IntegrateOptions& opt, Sample&& sample,
                           Obs&& observer = {}) {
-  const double dir = t1 < t0 ? -1.0 : 1.0;
-  if constexpr (AdaptiveStepper<S, BasicModel<F>, X>) {
-    detail::SamplingObserver<Sample, Obs> obs{times, sample, observer, dir};
-    return integrate(stepper, model, x, t0, t1, opt, obs);
-  } else {
-    check_options(opt);
-    check_state(x);
-    fixed_step_count(t0, t1, opt.step);  // checks the times and the step
-    Outcome out = detail::start_outcome(t0, x);
-    observer(t0, x);
-    double a = t0;
-    for (std::int64_t k = 0; k <= times.size(); ++k) {
-      const double b = k < times.size() ? times[k] : t1;
-      if (b != a) {
-        const std::int64_t n = fixed_step_count(a, b, opt.step);
-        const bool go_on = detail::fixed_steps(stepper, model, x, a, b, n, opt, out, observer);
-        detail::record_projection(out, stepper);
-        if (!go_on) return out;
-        a = b;
-      }
-      if (k < times.size()) sample(k, b, x);
-    }
-    return out;
-  }
+  return detail::run_sampled(stepper, model, x, t0, t1, times, opt, sample, observer);
+}
+
+/// The same on a model with a state of its own (ModelWithState).
+template <class S, ModelWithState M, class Sample, class Obs = NoObserver>
+OutcomeOf<typename M::state_type> integrate_sampled(S& stepper, const M& model,
+                                                    typename M::state_type x, double t0, double t1,
+                                                    const OutputTimes& times,
+                                                    const IntegrateOptions& opt, Sample&& sample,
+                                                    Obs&& observer = {}) {
+  return detail::run_sampled(stepper, model, x, t0, t1, times, opt, sample, observer);
 }
 
 }  // namespace newtop

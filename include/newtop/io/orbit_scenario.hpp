@@ -21,6 +21,9 @@ struct OrbitScenario {
   OrbitState initial;
   IntegrateSection integrate;  ///< t0, t_end in time on either orbit
   OutputSection output;
+  /// μ and the radius (circular) or semi-major axis (elliptic) when the file gives them (not for
+  /// `rate`): the units they imply and the unit-mix warnings (orbit.hpp).
+  std::optional<double> mu, radius;
 
   bool circular() const { return std::holds_alternative<CircularOrbit>(orbit); }
   /// The orbit's rate at t0: ω0, or ν̇(ν0) on an ellipse.

@@ -15,6 +15,8 @@
 /// Lagrange region: k_R > k_Y > 0 (B > A > C), the Jacobi integral a minimum: Lyapunov stable.
 /// DeBra–Delp region: both conditions with k_R, k_Y < 0: stable by gyroscopic coupling only.
 
+#include <array>
+#include <complex>
 #include <optional>
 #include <vector>
 
@@ -71,5 +73,24 @@ DebraDelpPoint debra_delp_point(double k_R, double k_Y);
 /// must lie in the open square |k| < 1. Throws InputError for counts < 1 or points outside.
 std::vector<DebraDelpPoint> debra_delp_scan(double k_R_lo, double k_R_hi, int n_R, double k_Y_lo,
                                             double k_Y_hi, int n_Y);
+
+}  // namespace newtop
+
+namespace newtop {
+
+/// One linear libration mode about the rest orientation nearest a state (DeBra–Delp): `pitch`
+/// (σ = −3 k_P) or a `roll-yaw` root of σ² + (1 + 3k_R + k_R k_Y)σ + 4 k_R k_Y, σ = s²/ω0².
+struct LibrationMode {
+  const char* name = "pitch";
+  std::complex<double> sigma;  ///< s²/ω0²
+  bool oscillating = false;    ///< σ real and < 0: a libration of frequency ω0 √(−σ)
+  double frequency = 0.0;      ///< √(−σ) ω0 [rad/time] when oscillating, else 0
+  double period = 0.0;         ///< 2π/frequency when oscillating, else 0
+};
+
+/// The three modes on a circular orbit of rate ω0 about the rest orientation whose axes are the
+/// principal axes nearest the state's: pitch along n, yaw along γ, roll along n × γ (A, B, C
+/// their moments, k_R = (B − C)/A, k_Y = (B − A)/C, k_P = (A − C)/B).
+std::array<LibrationMode, 3> libration_modes(const Body& body, const OrbitState& s, double rate);
 
 }  // namespace newtop

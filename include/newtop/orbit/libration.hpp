@@ -32,6 +32,18 @@ PitchProblem pitch_problem(double eccentricity, double k);
 /// The pitch problem of a body on an ellipse: k from the principal moments (A, B, C); throws
 /// InputError unless the body turns about its centre of mass without gyrostatic moment (the
 /// planar motion about z is Beletsky's equation only then).
+/// The body and a state relabelled so that the principal axis along the orbit normal is z: the
+/// axes turned by the signed permutation P (a rotation, det P = 1) with P n = e_z for the axis a
+/// of largest |n_a| (rows of P: e_{a+1}, σ e_{a+2}, σ e_a with σ the sign of n_a), the moments
+/// reordered alike. The motion is the same; Beletsky's equation then holds with A, B the moments
+/// of the new x, y axes and C that of the pitch axis, whichever body axis it is.
+struct PitchFrame {
+  Body body;
+  OrbitState state;
+  int pitch_axis = 2;  ///< the body axis along ±n (0, 1, 2)
+};
+PitchFrame pitch_frame(const Body& body, const OrbitState& s);
+
 PitchProblem pitch_problem(const Body& body, const EllipticOrbit& orbit);
 
 /// (θ, θ′) of a planar state at the true anomaly ν: the orbit normal along body z, γ in the body

@@ -5,6 +5,9 @@
 /// anomaly ν, with the relations the attitude equations need: λ = 3μ/R³, the orbit's rate ν̇,
 /// dt/dν and the time between two anomalies (Kepler's equation).
 
+#include <string>
+#include <vector>
+
 #include "newtop/core/types.hpp"
 
 namespace newtop {
@@ -62,5 +65,20 @@ double elapsed_time(const EllipticOrbit& orbit, double nu1, double nu2);
 /// The true anomaly reached a time t after the start (ν(0) = ν0), continuous in t: Kepler's
 /// equation solved by Newton's method to round-off.
 double true_anomaly_at(const EllipticOrbit& orbit, double t);
+
+/// Earth's μ = GM in m³/s² (IERS) and its equatorial radius in m: the numbers unit mixes are
+/// recognised by.
+inline constexpr double kEarthMu = 3.986004418e14;
+inline constexpr double kEarthRadius = 6.378137e6;
+
+/// The units an orbit's μ implies, in words: "m, s (SI; Earth's mu in m^3/s^2)" or "km, s (Earth's
+/// mu in km^3/s^2)" within 1 % of Earth's μ, else "the length unit of radius, the time unit of
+/// mu" (newtop is unit-free: times follow from μ and R).
+std::string orbit_units(double mu);
+
+/// One line per likely unit mix of an orbit of parameter μ and radius (or semi-major axis) R:
+/// a rate √(μ/R³) above 1 rad per time unit (Earth's μ in m³/s² with R in km), a radius below
+/// Earth's for Earth's μ (an altitude given as a radius). Empty when the numbers look sane.
+std::vector<std::string> orbit_unit_warnings(double mu, double radius);
 
 }  // namespace newtop

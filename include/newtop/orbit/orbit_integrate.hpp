@@ -3,20 +3,32 @@
 /// Integrators of the orbit model (docs/orbit.md §5): a Lie–Poisson splitting whose sub-flows are
 /// exact — rotations of (m, γ, n) about the body axes, the gravity-gradient kick and the orbital
 /// rotation of γ about n — composed to order 2, 4, 6 or 8 by the project's composition tables;
-/// and an adaptive reference, Fehlberg 7(8) with error control (Boost.Odeint). On a circular
-/// orbit the independent variable is the time t; on an elliptic orbit it is the true anomaly ν.
+/// and the embedded Runge–Kutta pairs (Fehlberg 7(8), Dormand–Prince 5(4)) with error control and
+/// dense output. Every run goes through the engine's one driver (integrate/driver.hpp) and its
+/// sampled output (integrate/sampled.hpp): the orbit brings only its sub-flows and its right-hand
+/// side. On a circular orbit the independent variable is the time t; on an elliptic orbit it is
+/// the true anomaly ν.
 
 #include <cstdint>
 #include <functional>
+#include <string_view>
 #include <vector>
 
 #include "newtop/integrate/composition_tables.hpp"
+#include "newtop/integrate/driver.hpp"
 #include "newtop/integrate/method_settings.hpp"
 #include "newtop/integrate/options.hpp"
 #include "newtop/integrate/outcome.hpp"
+#include "newtop/integrate/output_times.hpp"
 #include "newtop/orbit/orbit_model.hpp"
 
 namespace newtop {
+
+/// The engine's checks of an orbit state: finite (m, γ, n), else InputError naming the vector.
+void check_state(const OrbitState& x);
+inline bool is_finite(const OrbitState& x) {
+  return x.m.allFinite() && x.gamma.allFinite() && x.normal.allFinite();
+}
 
 /// Exact flow of ½(m_a − k_a)²/I_a over a time τ: m, γ and n turn about the body axis e_a by
 /// the angle θ = τ (m_a − k_a)/I_a, each as x ← x rotated by −θ about e_a (ẋ = x × θ̇ e_a).
@@ -59,7 +71,8 @@ class OrbitSplittingStepper {
 
   /// Circular orbit: advances x by the time h.
   void step(const CircularOrbitModel& model, OrbitState& x, double h) const;
-  /// Elliptic orbit: advances x from the true anomaly nu by h (in ν).
+  /// Elliptic orbit (non-autonomous in ν: the driver passes the anomaly at the start of the
+  /// step): advances x from the true anomaly nu by h (in ν).
   void step(const EllipticOrbitModel& model, OrbitState& x, double nu, double h) const;
 
  private:
@@ -75,14 +88,23 @@ struct OrbitOutcome {
   OrbitState state;
   std::int64_t steps = 0;
   std::int64_t rejected = 0;
+  double last_step = 0.0;  ///< size of the last accepted step
+};
+
+/// The driver's outcome on the orbit model.
+template <>
+struct OutcomeFor<OrbitState> {
+  using type = OrbitOutcome;
 };
 
 /// Called at the start and after every accepted step with (t or ν, state).
 using OrbitObserver = std::function<void(double, const OrbitState&)>;
+/// Called at each output time, in order, with (k, t_k or ν_k, state there).
+using OrbitSample = std::function<void(std::int64_t, double, const OrbitState&)>;
 
 /// Fixed-step run from t0 to t1 (ν0 to ν1 on an elliptic orbit) in n = ceil(|t1 − t0|/step) equal
-/// steps, landing exactly on t1. Throws InputError for a step that is not finite and > 0 or
-/// non-finite ends.
+/// steps, landing exactly on t1: the engine's driver with this stepper. Throws InputError for a
+/// step that is not finite and > 0 or non-finite ends.
 OrbitOutcome integrate(const OrbitSplittingStepper& stepper, const CircularOrbitModel& model,
                        OrbitState x, double t0, double t1, double step,
                        const OrbitObserver& observer = {});
@@ -101,9 +123,9 @@ struct OrbitAdaptiveOptions {
   std::int64_t max_steps = 100'000'000;  ///< accepted + rejected trials
 };
 
-/// Fehlberg 7(8) (odeint's runge_kutta_fehlberg78, controlled) from t0 to t1 (ν0 to ν1 on an
-/// elliptic orbit), landing exactly on t1. It does not keep the Casimirs: they drift at the
-/// tolerance.
+/// Fehlberg 7(8) (the engine's embedded pair on the orbit state) from t0 to t1 (ν0 to ν1 on an
+/// elliptic orbit) with the engine's adaptive driver, landing exactly on t1. It does not keep the
+/// Casimirs: they drift at the tolerance.
 OrbitOutcome integrate_adaptive(const CircularOrbitModel& model, OrbitState x, double t0, double t1,
                                 const OrbitAdaptiveOptions& options,
                                 const OrbitObserver& observer = {});
@@ -116,13 +138,21 @@ OrbitOutcome integrate_adaptive(const EllipticOrbitModel& model, OrbitState x, d
 /// (the right-hand side evaluated afresh at x). Event location lands on the solution with it.
 OrbitState rkf78_step(const CircularOrbitModel& model, const OrbitState& x, double t, double h);
 OrbitState rkf78_step(const EllipticOrbitModel& model, const OrbitState& x, double nu, double h);
+/// The same for any adaptive method of the orbit ("rkf78", "dopri5"): its propagated formula.
+OrbitState adaptive_formula_step(std::string_view name, const CircularOrbitModel& model,
+                                 const OrbitState& x, double t, double h);
+OrbitState adaptive_formula_step(std::string_view name, const EllipticOrbitModel& model,
+                                 const OrbitState& x, double nu, double h);
 
 /// The adaptive method on an orbit (the default there when only a tolerance is given).
 inline constexpr std::string_view kOrbitAdaptiveMethod = "rkf78";
 
+/// Whether a method name is one of the orbit's adaptive methods ("rkf78", "dopri5").
+bool is_orbit_adaptive_method(std::string_view name);
+
 /// Checks that a method runs on the orbit model: a splitting composition of composition_tables()
-/// (with settings.step > 0) or "rkf78" (with tolerances > 0); throws InputError naming `method`
-/// (listing the names that do) or the step or tolerance otherwise.
+/// (with settings.step > 0), "rkf78" or "dopri5" (with tolerances > 0); throws InputError naming
+/// `method` (listing the names that do) or the step or tolerance otherwise.
 void validate_orbit_method(const MethodSettings& settings);
 
 /// Runs a method by name on a circular orbit from t0 to t1 (OrbitSplittingStepper with the named
@@ -134,5 +164,19 @@ OrbitOutcome run_orbit_method(const MethodSettings& settings, const CircularOrbi
 OrbitOutcome run_orbit_method(const MethodSettings& settings, const EllipticOrbitModel& model,
                               const OrbitState& x, double nu0, double nu1, std::int64_t max_steps,
                               const OrbitObserver& observer = {});
+
+/// Runs as run_orbit_method and reports the state at every output time (in the run's variable: t,
+/// or ν on an ellipse) to sample: the engine's integrate_sampled (the adaptive methods' continuous
+/// extension; fixed-step methods land on each output time).
+OrbitOutcome run_orbit_method_sampled(const MethodSettings& settings,
+                                      const CircularOrbitModel& model, const OrbitState& x,
+                                      double t0, double t1, const OutputTimes& times,
+                                      std::int64_t max_steps, const OrbitSample& sample,
+                                      const OrbitObserver& observer = {});
+OrbitOutcome run_orbit_method_sampled(const MethodSettings& settings,
+                                      const EllipticOrbitModel& model, const OrbitState& x,
+                                      double nu0, double nu1, const OutputTimes& times,
+                                      std::int64_t max_steps, const OrbitSample& sample,
+                                      const OrbitObserver& observer = {});
 
 }  // namespace newtop

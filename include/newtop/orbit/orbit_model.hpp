@@ -36,6 +36,9 @@ void check_orbit_body(const Body& body);
 template <class O>
 class BasicOrbitModel {
  public:
+  /// The state the engine's driver advances on this model (integrate/driver.hpp, ModelWithState).
+  using state_type = OrbitState;
+
   BasicOrbitModel(const Body& body, const O& orbit) : body_(body), orbit_(orbit) {
     check_orbit_body(body);
   }

@@ -1,0 +1,146 @@
+// Every option of every subcommand that takes a scenario, on each model (the fixed point, a
+// circular orbit, an elliptic orbit): it works (exit 0) or is refused in one line naming it (exit
+// 2) — never a crash, never another exit. The options are read from each subcommand's --help, so
+// that a new option joins the enumeration by itself. That a working option is not dropped is
+// checked option by option elsewhere (test_orbit_attitude_cli.cpp for simulate on orbits).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/cli.hpp"
+
+namespace {
+
+using newtop::test::CliResult;
+
+struct Model {
+  const char* name;
+  const char* example;
+  const char* t_end;   ///< a short run
+  const char* step;    ///< a step of it
+  const char* dt_out;  ///< an output interval inside it
+  const char* times;   ///< an output time inside it
+};
+
+const Model kModels[] = {
+    {"fixed point", "attitude_heavy_top.toml", "1", "0.01", "0.25", "0.5"},
+    {"circular orbit", "orbit_leo_lagrange.toml", "600", "10", "100", "300"},
+    {"elliptic orbit", "orbit_elliptic_pitch.toml", "1", "0.01", "0.25", "0.5"},
+};
+
+/// The subcommands that take a scenario, with the arguments each needs besides the scenario.
+const std::map<std::string, std::string> kCommands{
+    {"simulate", ""},
+    {"integrals", ""},
+    {"equilibria", ""},
+    {"stability", ""},
+    {"section", "--surface gamma1=0"},
+    {"chaos", ""},
+    {"libration", "--iterates 2 --resonances 1:1"},
+    {"analytic", ""},
+    {"field", ""},
+    {"find-integrals", ""},
+    {"rotations", ""},
+};
+
+/// The options that integrate take --t-end from the command line to stay short.
+const std::set<std::string> kIntegrating{"simulate", "section", "chaos", "analytic"};
+
+/// The options of a subcommand, from its --help.
+std::vector<std::string> options_of(const std::string& command) {
+  const CliResult r = newtop::test::run_newtop(command + " --help");
+  EXPECT_EQ(r.code, 0) << r.out;
+  std::vector<std::string> names;
+  const std::regex option(R"((?:^|[\s,])(--[a-z][a-z0-9-]*))");
+  std::istringstream in(r.out);
+  for (std::string line; std::getline(in, line);) {
+    const auto first = line.find_first_not_of(' ');
+    if (first == std::string::npos || line[first] != '-') continue;  // option lines only
+    std::smatch m;
+    if (std::regex_search(line, m, option) && m[1] != "--help") names.push_back(m[1]);
+  }
+  return names;
+}
+
+/// A value for an option on a model ("" for a flag).
+std::string value_of(const std::string& option, const Model& m, const std::string& file) {
+  const std::map<std::string, std::string> values{
+      {"--t-end", m.t_end},
+      {"--step", m.step},
+      {"--tol", "1e-8"},
+      {"--method", "rkf78"},
+      {"--split", "axes"},
+      {"--out", file},
+      {"--every", "2"},
+      {"--dt-out", m.dt_out},
+      {"--times", m.times},
+      {"--euler", "321"},
+      {"--samples", "5"},
+      {"--gamma", "0,0,1"},
+      {"--degree", "2"},
+      {"--points", "10"},
+      {"--resonances", "1:1"},
+      {"--spin", "0.5:1.5:2"},
+      {"--iterates", "2"},
+      {"--direction", "up"},
+      {"--crossings", "2"},
+      {"--orbits", "2"},
+      {"--energy", "1"},
+      {"--area", "0"},
+      {"--axis", "z"},
+      {"--omega", "1"},
+      {"--equilibrium", "1"},
+      {"--scan-omega", "0:2:3"},
+      {"--scan", "omega=0:2:3"},
+      {"--diagram", "debra-delp"},
+      {"--potential", "quadratic"},
+      {"--surface", "gamma1=0"},
+  };
+  const auto it = values.find(option);
+  return it == values.end() ? "" : it->second;  // a flag, or an option added since (then bare)
+}
+
+void expect_works_or_refused(const std::string& args) {
+  const CliResult r = newtop::test::run_newtop(args, newtop::test::Stderr::separate);
+  if (r.code == 0) return;
+  ASSERT_EQ(r.code, 2) << args << "\n" << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\n" << r.err;
+  EXPECT_NE(r.err.find("newtop: error: "), std::string::npos) << args << "\n" << r.err;
+}
+
+TEST(OptionsOnEveryModel, EachOptionWorksOrIsRefusedInOneLine) {
+  int n = 0;
+  for (const auto& [command, extra] : kCommands) {
+    const std::vector<std::string> options = options_of(command);
+    ASSERT_FALSE(options.empty()) << command;
+    for (const std::string& option : options) {
+      for (const Model& m : kModels) {
+        const std::string file =
+            newtop::test::scratch_path("newtop_options", "out" + std::to_string(n++) + ".csv")
+                .string();
+        std::string args = command + " " + newtop::test::example_path(m.example) + " " + extra;
+        if (kIntegrating.count(command) && option != "--t-end" && option != "--times") {
+          args += std::string(" --t-end ") + m.t_end;
+        }
+        if (option == "--times" && command == "simulate") args += " --out " + file;
+        if ((option == "--dt-out" || option == "--euler" || option == "--attitude") &&
+            command == "simulate") {
+          args += " --out " + file;
+        }
+        if (extra.find(option) != std::string::npos) continue;  // already given
+        args += " " + option + " " + value_of(option, m, file);
+        SCOPED_TRACE(m.name);
+        expect_works_or_refused(args);
+      }
+    }
+  }
+}
+
+}  // namespace
