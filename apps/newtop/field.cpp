@@ -5,11 +5,11 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 #include "command.hpp"
 #include "newtop/exact/multipole.hpp"
 #include "newtop/io/json.hpp"
+#include "newtop/io/option_lists.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
 #include "summary.hpp"
@@ -24,45 +24,6 @@ struct FieldArgs {
   std::optional<std::string> scan;
   bool json = false;
 };
-
-Vec3 parse_gamma(const std::string& text) {
-  std::stringstream ss(text);
-  std::string tok;
-  std::vector<double> v;
-  while (std::getline(ss, tok, ',')) {
-    try {
-      std::size_t used = 0;
-      v.push_back(std::stod(tok, &used));
-      if (used != tok.size()) throw std::invalid_argument(tok);
-    } catch (const std::exception&) {
-      throw InputError("--gamma: expected three numbers g1,g2,g3, found \"" + text + "\"");
-    }
-  }
-  if (v.size() != 3)
-    throw InputError("--gamma: expected three numbers g1,g2,g3, found \"" + text + "\"");
-  const Vec3 g(v[0], v[1], v[2]);
-  if (!g.allFinite() || g.norm() == 0.0) {
-    throw InputError("--gamma: expected a finite non-zero vector, found " + format_vector(g));
-  }
-  return g.normalized();
-}
-
-struct Scan {
-  double R1, R2;
-  int n;
-};
-
-Scan parse_scan(const std::string& text) {
-  Scan s{};
-  char c1 = 0, c2 = 0;
-  std::istringstream is(text);
-  if (!(is >> s.R1 >> c1 >> s.R2 >> c2 >> s.n) || c1 != ':' || c2 != ':' || !is.eof() ||
-      !(s.R1 > 0) || !(s.R2 > s.R1) || s.n < 2) {
-    throw InputError("--scan-R: expected R1:R2:N with 0 < R1 < R2 and N >= 2, found \"" + text +
-                     "\"");
-  }
-  return s;
-}
 
 io::Json matrix_json(const Mat3& m) {
   io::Json J = io::Json::array();
@@ -143,7 +104,7 @@ int run(const FieldArgs& a) {
   const double R = a.R.value_or(centre.R);
   const Body& body = sc.model.body();
   const Mat3& P = body.principal_axes();
-  const Vec3 gamma = P.transpose() * parse_gamma(a.gamma);  // user frame → principal axes
+  const Vec3 gamma = P.transpose() * io::parse_gamma(a.gamma);  // user frame → principal axes
   auto at = [&](double r) {
     const ExactField x = ExactField::make(mass_model, mu, r, P);
     const MultipoleField q = MultipoleField::make(*mass_model, 3, mu, r, P);
@@ -164,7 +125,7 @@ int run(const FieldArgs& a) {
   const TruncationError t = truncation_error(MultipoleField::make(*mass_model, 3, mu, R, P), gamma);
   j["approx_truncation_error"] = {{"next_term", t.next_term}, {"bound", t.bound}};
   if (a.scan) {
-    const Scan s = parse_scan(*a.scan);
+    const io::RadiusScan s = io::parse_radius_scan(*a.scan);
     std::vector<double> Rs, dV, dL, rel;
     for (int i = 0; i < s.n; ++i) {
       const double r = s.R1 * std::pow(s.R2 / s.R1, static_cast<double>(i) / (s.n - 1));
