@@ -62,9 +62,9 @@ RadiusScan parse_radius_scan(const std::string& text) {
   char c1 = 0, c2 = 0;
   std::istringstream is(text);
   if (!(is >> s.R1 >> c1 >> s.R2 >> c2 >> s.n) || c1 != ':' || c2 != ':' || !is.eof() ||
-      !(s.R1 > 0) || !(s.R2 > s.R1) || s.n < 2) {
-    throw InputError("--scan-R: expected R1:R2:N with 0 < R1 < R2 and N >= 2, found \"" + text +
-                     "\"");
+      !(s.R1 > 0) || !(s.R2 > s.R1) || s.n < 2 || s.n > kMaxScanPoints) {
+    throw InputError("--scan-R: expected R1:R2:N with 0 < R1 < R2 and 2 <= N <= " +
+                     std::to_string(kMaxScanPoints) + ", found \"" + text + "\"");
   }
   return s;
 }
@@ -165,7 +165,14 @@ std::pair<RatioAxis, RatioAxis> parse_ratio_scan(const std::string& text) {
     }
     return a;
   };
-  return {one(text.substr(0, comma), "k_R"), one(text.substr(comma + 1), "k_Y")};
+  const std::pair<RatioAxis, RatioAxis> axes{one(text.substr(0, comma), "k_R"),
+                                             one(text.substr(comma + 1), "k_Y")};
+  if (static_cast<long long>(axes.first.n) * axes.second.n > kMaxGridPoints) {
+    throw InputError("--scan: expected at most " + std::to_string(kMaxGridPoints) +
+                     " grid points N*M, found " + std::to_string(axes.first.n) + "*" +
+                     std::to_string(axes.second.n));
+  }
+  return axes;
 }
 
 }  // namespace newtop::io

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "newtop/analysis/stability_spin.hpp"
 #include "newtop/core/types.hpp"
 #include "newtop/orbit/spin_orbit.hpp"
 
@@ -22,7 +23,7 @@ std::vector<double> parse_times(const std::string& option, const std::string& te
 /// `--gamma g1,g2,g3`: three numbers, a finite non-zero vector, returned normalized.
 Vec3 parse_gamma(const std::string& text);
 
-/// `--scan-R R1:R2:N`: N ≥ 2 distances from R1 to R2, 0 < R1 < R2.
+/// `--scan-R R1:R2:N`: 2 ≤ N ≤ kMaxScanPoints distances from R1 to R2, 0 < R1 < R2.
 struct RadiusScan {
   double R1, R2;
   int n;
@@ -63,7 +64,7 @@ struct RatioAxis {
   double lo = -0.99, hi = 0.99;
   int n = 67;
 };
-/// "k_R=LO:HI:N,k_Y=LO:HI:M" with |k| < 1 and counts ≥ 1.
+/// "k_R=LO:HI:N,k_Y=LO:HI:M" with |k| < 1, counts ≥ 1 and N·M ≤ kMaxGridPoints.
 std::pair<RatioAxis, RatioAxis> parse_ratio_scan(const std::string& text);
 
 }  // namespace newtop::io
