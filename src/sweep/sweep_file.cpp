@@ -25,8 +25,7 @@ const std::vector<std::string> kAxisKeys{"key", "start", "stop", "count", "scale
 
 /// start, stop, count and scale (linear or log) of one [[axes]] entry, or its values; admit(n)
 /// checks the number of values before they are made (it throws for too many).
-std::vector<double> axis_values(io::TableReader& r,
-                                const std::function<void(std::size_t)>& admit) {
+std::vector<double> axis_values(io::TableReader& r, const std::function<void(std::size_t)>& admit) {
   if (r.has("values")) {
     r.only({"key", "values"}, kAxisKeys, "values");
     std::vector<double> v = r.numbers("values");
