@@ -18,6 +18,9 @@ namespace {
 
 /// At most this many points (a CSV of 10⁸ rows is already 10 GB).
 constexpr double kMaxPoints = 1e8;
+/// At most this many values over all axes (1.6 GB): a zip of two axes of 10⁸ values, of K axes
+/// 2·10⁸/K values each. A grid of at most 10⁸ points never comes near it.
+constexpr double kMaxValues = 2e8;
 
 const std::vector<std::string> kTopKeys{"scenario",  "quantities", "combine", "axes",
                                         "stability", "integrate",  "level"};
@@ -180,6 +183,7 @@ void read_axes(const toml::table& doc, SweepFile& s) {
         .fail("axes", "expected [[axes]] tables, found " + io::describe(*n));
   }
   double points = 1;  // the grid's points over the axes read so far
+  double values = 0;  // the values of the axes read so far
   for (std::size_t i = 0; i < list->size(); ++i) {
     io::TableReader r(*list->get(i)->as_table(), s.source, "axes[" + std::to_string(i + 1) + "]");
     r.check_keys(kAxisKeys);
@@ -188,13 +192,20 @@ void read_axes(const toml::table& doc, SweepFile& s) {
       if (b.key == a.key) r.fail("key", "expected each key once, found '" + a.key + "' again");
     }
     // The sizes are checked before the values are made: axes whose points are refused never
-    // allocate them (three axes of 10⁸ values would take 2.4 GB).
-    a.values = axis_values(r, [&](std::size_t n) {
-      if (s.combine == Combine::zip && !s.axes.empty() && n != s.axes.front().values.size()) {
-        zip_mismatch(s, s.axes.front(), a.key, n);
+    // allocate them (three axes of 10⁸ values would take 2.4 GB), and the values of all axes
+    // together are bounded (a zip of K axes of N values holds K N of them).
+    a.values = axis_values(r, [&](std::size_t length) {
+      if (s.combine == Combine::zip && !s.axes.empty() && length != s.axes.front().values.size()) {
+        zip_mismatch(s, s.axes.front(), a.key, length);
       }
-      points *= static_cast<double>(n);
+      points *= static_cast<double>(length);
       if (s.combine == Combine::grid && points > kMaxPoints) too_many_points(s, points);
+      values += static_cast<double>(length);
+      if (values > kMaxValues) {
+        throw InputError(s.source + ": [[axes]]: expected at most " + format_number(kMaxValues) +
+                         " values over all axes, found " + format_number(values) + " by '" + a.key +
+                         "'");
+      }
     });
     r.finish();
     s.axes.push_back(std::move(a));
