@@ -38,6 +38,7 @@ class Fnv {
     h_ *= 1099511628211ull;
     return *this;
   }
+  std::uint64_t value() const { return h_; }
   std::string hex() const {
     char buf[17];
     std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h_));
@@ -85,9 +86,17 @@ std::optional<double> parse_value(std::string_view cell) {
 std::optional<std::pair<std::size_t, PointResult>> parse_line(std::string_view line,
                                                               std::size_t width,
                                                               std::string_view key) {
+  // The check as a number (16 lowercase hex digits), compared as one.
   const std::size_t check = line.rfind('\t');
-  if (check == std::string_view::npos ||
-      line.substr(check + 1) != Fnv().add(key).add(line.substr(0, check)).hex()) {
+  if (check == std::string_view::npos) return std::nullopt;
+  const std::string_view check_text = line.substr(check + 1);
+  std::uint64_t written = 0;
+  const auto parsed =
+      std::from_chars(check_text.data(), check_text.data() + check_text.size(), written, 16);
+  if (check_text.size() != 16 ||
+      check_text.find_first_not_of("0123456789abcdef") != std::string_view::npos ||
+      parsed.ptr != check_text.data() + check_text.size() ||
+      written != Fnv().add(key).add(line.substr(0, check)).value()) {
     return std::nullopt;
   }
   const std::size_t tab1 = line.find('\t');
