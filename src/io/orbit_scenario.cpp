@@ -220,7 +220,9 @@ void check_orbit_magnitudes(const OrbitScenario& s, const TableReader& orbit,
   }
   const double size = std::max({d.m.lpNorm<Eigen::Infinity>(), d.gamma.lpNorm<Eigen::Infinity>(),
                                 d.normal.lpNorm<Eigen::Infinity>()});
-  if (!(size <= kMaxMagnitude)) {
+  // allFinite: a NaN component (inf − inf in m × ω) escapes the maximum.
+  const bool finite = d.m.allFinite() && d.gamma.allFinite() && d.normal.allFinite();
+  if (!finite || !(size <= kMaxMagnitude)) {
     const char* keys[] = {"omega", "omega_relative", "quaternion", "euler_321"};
     std::string key = "omega";
     for (const char* k : keys) {

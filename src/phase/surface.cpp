@@ -2,12 +2,17 @@
 
 #include "newtop/phase/surface.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
 
 namespace newtop::phase {
 namespace {
+
+/// The largest coefficient of the surface function (SurfaceFunction), as the scenario's bound on
+/// every derived quantity (1e300).
+constexpr double kMaxCoefficient = 1e300;
 
 constexpr std::string_view kComponents = "a component (omega1..3, m1..3, gamma1..3, normal1..3)";
 
@@ -128,6 +133,19 @@ SurfaceFunction::SurfaceFunction(const Surface& s, const Body& body, bool with_n
   b_m = s.a_m + w;
   b_gamma = s.a_gamma;
   d = s.c + w.dot(body.gyrostat());
+  // Coefficients near the largest double (1e308*omega1 + 1e308*m1) would make g inf or NaN at
+  // ordinary states; at most kMaxCoefficient, g stays finite for |m|, |γ| up to 1e7.
+  const double largest = std::max({b_m.lpNorm<Eigen::Infinity>(), b_gamma.lpNorm<Eigen::Infinity>(),
+                                   b_normal.lpNorm<Eigen::Infinity>(), std::abs(d)});
+  const bool finite =
+      b_m.allFinite() && b_gamma.allFinite() && b_normal.allFinite() && std::isfinite(d);
+  if (!finite || !(largest <= kMaxCoefficient)) {
+    throw InputError("--surface: expected coefficients of at most " +
+                     format_number(kMaxCoefficient) +
+                     " in the Lie-Poisson variables (a_m + a_omega/I, a_gamma, c + a_omega.k/I), "
+                     "found " +
+                     format_number(largest) + " for '" + s.text + "' on this body");
+  }
 }
 
 }  // namespace newtop::phase

@@ -19,7 +19,7 @@ namespace {
 using namespace newtop;
 
 // 4 points of Beletsky's problem: two spin rates (one below, one above the threshold 0.99…) and
-// two moments C; the stability verdict's lyapunov_stable is NaN (inconclusive) at some of them.
+// two moments C, 7 columns each (stable and unstable verdicts, eigenvalues, equilibrium counts).
 constexpr const char* kSweep = R"(scenario = "base.toml"
 quantities = ["stability", "equilibria"]
 
