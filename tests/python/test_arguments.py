@@ -62,7 +62,12 @@ WORKER = textwrap.dedent(
         return a
 
     def vec3():
-        return array((3,)) if rng.random() < 0.6 else array()
+        # Mostly three floats (with the special values), so that the calls reach the value checks
+        # behind the conversion; otherwise any array.
+        if rng.random() < 0.8:
+            return np.array([number() if rng.random() < 0.3 else float(rng.normal()) + 1.5
+                             for _ in range(3)], dtype=float) if rng.random() < 0.9 else array((3,))
+        return array()
 
     def faces():
         n = int(rng.integers(0, 6))
@@ -79,7 +84,8 @@ WORKER = textwrap.dedent(
     methods = [None, "splitting6", "rk4", "dop853", "rkf78", "taylor", "bogus", ""]
 
     def scalar_or_array():
-        return number() if rng.random() < 0.7 else array()
+        r = rng.random()
+        return float(rng.uniform(0.1, 3.0)) if r < 0.4 else number() if r < 0.9 else array()
 
     CALLS = {
         "Body.from_principal": lambda: newtop.Body.from_principal(
@@ -117,7 +123,7 @@ WORKER = textwrap.dedent(
             box, [int(rng.integers(-3, 9)), number()][int(rng.integers(0, 2))],
             scalar_or_array(), scalar_or_array(), vec3()),
         "Model.quadratic_on": lambda: newtop.Model.quadratic_on(box, field, vec3()),
-        "integrals": lambda: newtop.integrals(model, newtop.State(vec3(), vec3())),
+        "integrals_at": lambda: newtop.integrals_at(model, newtop.State(vec3(), vec3())),
         "integrate": lambda: newtop.integrate(
             model, newtop.State(vec3(), vec3()) if rng.random() < 0.5 else state,
             scalar_or_array(), t0=scalar_or_array(),
