@@ -5,12 +5,12 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 #include "command.hpp"
 #include "newtop/analysis/field_scan.hpp"
 #include "newtop/exact/multipole.hpp"
 #include "newtop/io/json.hpp"
+#include "newtop/io/option_lists.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
 #include "summary.hpp"
@@ -24,33 +24,6 @@ struct FieldArgs {
   std::optional<double> R;
   std::optional<std::string> scan;
   bool json = false;
-};
-
-Vec3 parse_gamma(const std::string& text) {
-  std::stringstream ss(text);
-  std::string tok;
-  std::vector<double> v;
-  while (std::getline(ss, tok, ',')) {
-    try {
-      std::size_t used = 0;
-      v.push_back(std::stod(tok, &used));
-      if (used != tok.size()) throw std::invalid_argument(tok);
-    } catch (const std::exception&) {
-      throw InputError("--gamma: expected three numbers g1,g2,g3, found \"" + text + "\"");
-    }
-  }
-  if (v.size() != 3)
-    throw InputError("--gamma: expected three numbers g1,g2,g3, found \"" + text + "\"");
-  const Vec3 g(v[0], v[1], v[2]);
-  if (!g.allFinite() || g.norm() == 0.0) {
-    throw InputError("--gamma: expected a finite non-zero vector, found " + format_vector(g));
-  }
-  return g.normalized();
-}
-
-struct Scan {
-  double R1, R2;
-  int n;
 };
 
 io::Json values_json(const FieldSample& x);
@@ -69,18 +42,6 @@ void print_frame(const FieldComparison& c) {
   print_values("exact ", c.exact);
   print_values("approx", c.approx);
   print_values("diff  ", c.difference);
-}
-
-Scan parse_scan(const std::string& text) {
-  Scan s{};
-  char c1 = 0, c2 = 0;
-  std::istringstream is(text);
-  if (!(is >> s.R1 >> c1 >> s.R2 >> c2 >> s.n) || c1 != ':' || c2 != ':' || !is.eof() ||
-      !(s.R1 > 0) || !(s.R2 > s.R1) || s.n < 2) {
-    throw InputError("--scan-R: expected R1:R2:N with 0 < R1 < R2 and N >= 2, found \"" + text +
-                     "\"");
-  }
-  return s;
 }
 
 io::Json matrix_json(const Mat3& m) {
@@ -138,7 +99,7 @@ int run(const FieldArgs& a) {
   const double R = a.R.value_or(centre.R);
   const Body& body = sc.model.body();
   const Mat3& P = body.principal_axes();
-  const Vec3 given = parse_gamma(a.gamma);
+  const Vec3 given = io::parse_gamma(a.gamma);
   const Vec3 gamma = P.transpose() * given;  // user frame → principal axes
   const FieldComparison principal = compare_field(mass_model, body, mu, R, gamma);
   FieldComparison input = in_input_frame(principal, P);
@@ -158,7 +119,7 @@ int run(const FieldArgs& a) {
   j["approx_truncation_error"] = {{"next_term", t.next_term}, {"bound", t.bound}};
   j["input_frame"] = frame_json("input", input);
   if (a.scan) {
-    const Scan s = parse_scan(*a.scan);
+    const io::RadiusScan s = io::parse_radius_scan(*a.scan);
     const FieldScan f = scan_field_R(mass_model, body, mu, s.R1, s.R2, s.n, gamma);
     j["scan"] = {{"R", f.R},
                  {"potential_error", f.potential_error},

@@ -7,11 +7,11 @@
 #include <memory>
 #include <numbers>
 #include <optional>
-#include <sstream>
 
 #include "command.hpp"
 #include "interrupt.hpp"
 #include "newtop/io/json.hpp"
+#include "newtop/io/option_lists.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/orbit/spin_orbit.hpp"
@@ -29,48 +29,6 @@ struct LibrationArgs {
   bool asymmetric = false;
   bool json = false;
 };
-
-std::vector<SpinOrbitResonance> parse_resonances(const std::string& text) {
-  std::vector<SpinOrbitResonance> list;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    std::istringstream is(item);
-    int p = 0, q = 0;
-    char colon = 0;
-    std::string rest;
-    if (!(is >> p >> colon >> q) || colon != ':' || (is >> rest)) {
-      throw InputError("--resonances: expected a list p:q,p:q,… of integers, found '" + item + "'");
-    }
-    try {
-      list.push_back(resonance(p, q));
-    } catch (const InputError& e) {
-      throw InputError(std::string("--resonances: ") + e.what());
-    }
-  }
-  if (list.empty()) throw InputError("--resonances: expected a list p:q,…, found ''");
-  return list;
-}
-
-struct SpinScan {
-  double lo, hi;
-  int n;
-};
-
-SpinScan parse_spin(const std::string& text) {
-  std::istringstream is(text);
-  SpinScan s{};
-  char c1 = 0, c2 = 0;
-  std::string rest;
-  if (!(is >> s.lo >> c1 >> s.hi >> c2 >> s.n) || c1 != ':' || c2 != ':' || (is >> rest) ||
-      !std::isfinite(s.lo) || !std::isfinite(s.hi) || s.n < 1 || s.n > 10000 || s.hi < s.lo) {
-    throw InputError(
-        "--spin: expected LO:HI:N with LO <= HI finite spin rates and 1 <= N <= "
-        "10000, found '" +
-        text + "'");
-  }
-  return s;
-}
 
 io::Json solution_json(const PeriodicSolution& s, double e) {
   io::Json m = io::Json::array();
@@ -106,11 +64,12 @@ int run_guarded(const LibrationArgs& a) {
   // The pitch axis is the principal axis along the orbit normal, whichever it is.
   const PitchFrame frame = pitch_frame(sc.body, sc.initial);
   const PitchProblem problem = pitch_problem(frame.body, orbit);
-  const std::vector<SpinOrbitResonance> resonances = parse_resonances(a.resonances);
+  const std::vector<SpinOrbitResonance> resonances = io::parse_resonances(a.resonances);
   if (a.iterates < 1 || a.iterates > 100000) {
     throw InputError("--iterates: expected 1 to 100000, found " + std::to_string(a.iterates));
   }
-  const std::optional<SpinScan> scan = a.spin ? std::optional(parse_spin(*a.spin)) : std::nullopt;
+  const std::optional<io::SpinScan> scan =
+      a.spin ? std::optional(io::parse_spin(*a.spin)) : std::nullopt;
   // The scenario's start, carried to the first periapsis ν = 2πj ≥ ν0.
   const double nu0 = orbit.true_anomaly0;
   const double periapsis = 2 * std::numbers::pi * std::ceil(nu0 / (2 * std::numbers::pi));

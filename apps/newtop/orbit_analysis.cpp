@@ -4,9 +4,9 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "newtop/io/json.hpp"
+#include "newtop/io/option_lists.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/orbit/debra_delp.hpp"
@@ -139,44 +139,13 @@ int orbit_stability(const std::string& path, bool json, std::optional<int> equil
   return 0;
 }
 
-namespace {
-
-struct Axis {
-  double lo = -0.99, hi = 0.99;
-  int n = 67;
-};
-
-/// "k_R=LO:HI:N,k_Y=LO:HI:M".
-std::pair<Axis, Axis> parse_ratio_scan(const std::string& text) {
-  auto fail = [&] {
-    throw InputError("--scan: expected k_R=LO:HI:N,k_Y=LO:HI:M (|k| < 1, counts >= 1), found '" +
-                     text + "'");
-  };
-  const auto comma = text.find(',');
-  if (comma == std::string::npos) fail();
-  auto one = [&](const std::string& part, const std::string& name) {
-    if (part.rfind(name + "=", 0) != 0) fail();
-    std::istringstream is(part.substr(name.size() + 1));
-    Axis a;
-    char c1 = 0, c2 = 0;
-    std::string rest;
-    if (!(is >> a.lo >> c1 >> a.hi >> c2 >> a.n) || c1 != ':' || c2 != ':' || (is >> rest) ||
-        a.n < 1 || !(std::abs(a.lo) < 1) || !(std::abs(a.hi) < 1)) {
-      fail();
-    }
-    return a;
-  };
-  return {one(text.substr(0, comma), "k_R"), one(text.substr(comma + 1), "k_Y")};
-}
-
-}  // namespace
-
 int stability_diagram(const std::string& name, const std::optional<std::string>& scan,
                       const std::optional<std::string>& out, bool json) {
   if (name != "debra-delp") {
     throw InputError("--diagram: expected debra-delp, found '" + name + "'");
   }
-  const auto [r, y] = scan ? parse_ratio_scan(*scan) : std::pair<Axis, Axis>{};
+  const auto [r, y] =
+      scan ? io::parse_ratio_scan(*scan) : std::pair<io::RatioAxis, io::RatioAxis>{};
   const std::vector<DebraDelpPoint> points = debra_delp_scan(r.lo, r.hi, r.n, y.lo, y.hi, y.n);
   std::unique_ptr<io::AtomicFile> file;
   if (out) {

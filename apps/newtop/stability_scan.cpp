@@ -4,7 +4,6 @@
 
 #include <iomanip>
 #include <memory>
-#include <sstream>
 #include <vector>
 
 #include "newtop/analysis/stability_spin.hpp"
@@ -34,46 +33,6 @@ std::optional<Spectrum> grid_point(const QuadraticModel& base, int axis, double 
 }
 
 }  // namespace
-
-Range parse_range(const std::string& flag, const std::string& text, bool named) {
-  Range r{"omega", 0, 0, 0};
-  std::string spec = text;
-  if (named) {
-    const auto eq = text.find('=');
-    if (eq != std::string::npos) r.name = text.substr(0, eq);
-    spec = eq == std::string::npos ? "" : text.substr(eq + 1);
-  }
-  std::istringstream is(spec);
-  char c1 = 0, c2 = 0;
-  std::string rest;
-  if (!(is >> r.lo >> c1 >> r.hi >> c2 >> r.n) || c1 != ':' || c2 != ':' || (is >> rest) ||
-      r.n < 1 || r.n > kMaxScanPoints || !std::isfinite(r.lo) || !std::isfinite(r.hi)) {
-    throw InputError(flag + ": expected " + (named ? "NAME=LO:HI:N" : "LO:HI:N") +
-                     " (two finite numbers and a count from 1 to " +
-                     std::to_string(kMaxScanPoints) + "), found '" + text + "'");
-  }
-  if (named && r.name != "omega" && r.name != "lambda" && r.name != "A" && r.name != "B" &&
-      r.name != "C") {
-    throw InputError(flag + ": expected a parameter omega, lambda, A, B or C, found '" + r.name +
-                     "'");
-  }
-  return r;
-}
-
-std::pair<Range, Range> parse_grid(const std::string& spec) {
-  const auto comma = spec.find(',');
-  if (comma == std::string::npos) {
-    throw InputError("--scan: expected P1=LO:HI:N,P2=LO:HI:M, found '" + spec + "'");
-  }
-  const Range r1 = parse_range("--scan", spec.substr(0, comma), true);
-  const Range r2 = parse_range("--scan", spec.substr(comma + 1), true);
-  if (static_cast<long long>(r1.n) * r2.n > kMaxGridPoints) {
-    throw InputError("--scan: expected at most " + std::to_string(kMaxGridPoints) +
-                     " grid points N*M, found " + std::to_string(r1.n) + "*" +
-                     std::to_string(r2.n));
-  }
-  return {r1, r2};
-}
 
 io::Json omega_scan(const QuadraticModel& model, int axis, const Range& r, io::AtomicFile* file) {
   const auto points = scan_omega(model, axis, r.lo, r.hi, r.n);

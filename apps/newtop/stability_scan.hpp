@@ -8,28 +8,17 @@
 #include <utility>
 
 #include "newtop/io/json.hpp"
+#include "newtop/io/option_lists.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/model/model.hpp"
 
 namespace newtop::app {
 
-/// N equally spaced values of a parameter from lo to hi (lo alone when N = 1).
-struct Range {
-  std::string name;
-  double lo, hi;
-  int n;
-  double at(int k) const { return n == 1 ? lo : lo + (hi - lo) * k / (n - 1); }
-};
-
-/// "LO:HI:N" (or "NAME=LO:HI:N" when `named`, NAME in omega, lambda, A, B, C), N from 1 to
-/// kMaxScanPoints; `flag` names the option in messages.
-Range parse_range(const std::string& flag, const std::string& text, bool named);
-
-/// --scan "P1=LO:HI:N,P2=LO:HI:M" with N·M ≤ kMaxGridPoints.
-std::pair<Range, Range> parse_grid(const std::string& spec);
-
-/// Grid points of --scan at most: 1e6 eigenvalue problems take seconds and the CSV ~60 MB.
-inline constexpr long long kMaxGridPoints = 1000000;
+/// The ranges of --scan-omega and --scan (newtop/io/option_lists.hpp).
+using io::kMaxGridPoints;
+using io::parse_grid;
+using io::parse_range;
+using io::Range;
 
 /// Stability along Ω about `axis`: the JSON list, and the CSV
 /// `omega,max_real_part,linearly_stable,energy_casimir_stable` to `out` when given (opened by the

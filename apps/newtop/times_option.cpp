@@ -2,36 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "newtop/core/types.hpp"
 
 namespace newtop::app {
-
-std::vector<double> parse_times(const std::string& option, const std::string& text) {
-  std::vector<double> t;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    const auto first = item.find_first_not_of(" \t");
-    item = first == std::string::npos
-               ? ""
-               : item.substr(first, item.find_last_not_of(" \t") - first + 1);
-    double v = std::nan("");
-    try {
-      std::size_t used = 0;
-      v = std::stod(item, &used);
-      if (used != item.size()) v = std::nan("");
-    } catch (const std::exception&) {
-    }
-    if (!std::isfinite(v)) {
-      throw InputError(option + ": expected comma-separated finite times, found '" + item + "'");
-    }
-    t.push_back(v);
-  }
-  if (t.empty()) throw InputError(option + ": expected at least one time, found none");
-  return t;
-}
 
 double times_end(const std::string& option, const std::vector<double>& times, double t0) {
   const auto [lo, hi] = std::minmax_element(times.begin(), times.end());

@@ -5,12 +5,12 @@
 #include <vector>
 
 #include "newtop/integrate/output_times.hpp"
+#include "newtop/io/option_lists.hpp"
 
 namespace newtop::app {
 
-/// The finite times of a comma-separated list, in the order given; throws InputError naming the
-/// option and the item that is not a number.
-std::vector<double> parse_times(const std::string& option, const std::string& text);
+/// The finite times of a comma-separated list (newtop/io/option_lists.hpp).
+using io::parse_times;
 
 /// The end of a run through these times from t0: the time farthest from t0 (all must lie on one
 /// side of it).

@@ -3,11 +3,13 @@
 
 #include "newtop/io/orbit_scenario.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "file_check.hpp"
 #include "newtop/orbit/lvlh.hpp"
+#include "scenario_sections.hpp"
 #include "toml_parse.hpp"
 #include "toml_reader.hpp"
 
@@ -213,6 +215,54 @@ OutputSection read_output(TableReader& r) {
   return s;
 }
 
+/// The orbit at its strongest (λ and the anomaly's rate at periapsis) and the right-hand side at
+/// the start stay finite and at most kMaxMagnitude, as in a fixed-centre scenario
+/// (scenario_checks.cpp): a rate of 1e200 gives λ = 3e400 = inf, and the run would stop at once.
+void check_orbit_magnitudes(const OrbitScenario& s, const TableReader& orbit,
+                            const TableReader& initial) {
+  double lambda = 0.0, rate = 0.0;
+  OrbitState d;
+  if (const auto* c = std::get_if<CircularOrbit>(&s.orbit)) {
+    lambda = c->lambda_;
+    rate = c->rate;
+  } else {
+    const auto& e = std::get<EllipticOrbit>(s.orbit);
+    lambda = lambda_at(e, 0.0);
+    rate = anomaly_rate(e, 0.0);
+  }
+  if (!(lambda <= kMaxMagnitude) || !(rate <= kMaxMagnitude)) {
+    orbit.fail(orbit.has("rate") ? "rate" : (orbit.has("radius") ? "radius" : "semi_major_axis"),
+               "the orbit's lambda = " + format_number(lambda) +
+                   " and rate = " + format_number(rate) + " (at periapsis) exceed " +
+                   format_number(kMaxMagnitude) + ", the bound on every derived quantity");
+  }
+  if (const auto* c = std::get_if<CircularOrbit>(&s.orbit)) {
+    d = rhs(CircularOrbitModel(s.body, *c), s.initial);
+  } else {
+    const auto& e = std::get<EllipticOrbit>(s.orbit);
+    d = rhs(EllipticOrbitModel(s.body, e), s.initial, e.true_anomaly0);
+  }
+  const double size = std::max({d.m.lpNorm<Eigen::Infinity>(), d.gamma.lpNorm<Eigen::Infinity>(),
+                                d.normal.lpNorm<Eigen::Infinity>()});
+  // allFinite: a NaN component (inf − inf in m × ω) escapes the maximum.
+  const bool finite = d.m.allFinite() && d.gamma.allFinite() && d.normal.allFinite();
+  if (!finite || !(size <= kMaxMagnitude)) {
+    const char* keys[] = {"omega", "omega_relative", "quaternion", "euler_321"};
+    std::string key = "omega";
+    for (const char* k : keys) {
+      if (initial.has(k)) {
+        key = k;
+        break;
+      }
+    }
+    initial.fail(key, "the rates at the start (largest |d/dt| = " + format_number(size) +
+                          ") exceed " + format_number(kMaxMagnitude) +
+                          ", the bound on every derived quantity (omega, the body's inertia and "
+                          "the orbit's lambda = " +
+                          format_number(lambda) + ")");
+  }
+}
+
 }  // namespace
 
 double OrbitScenario::rate_at_start() const {
@@ -255,6 +305,7 @@ OrbitScenario parse_orbit_scenario(const std::string& text, const std::string& s
   const toml::table* init = section("initial", true);
   TableReader initial(*init, source, "initial");
   s.initial = read_initial(*init, initial, body, s.rate_at_start());
+  check_orbit_magnitudes(s, orbit_reader, initial);
   if (const toml::table* t = section("integrate", false)) {
     TableReader r(*t, source, "integrate");
     s.integrate = read_integrate(r);

@@ -2,12 +2,18 @@
 
 #include "newtop/phase/surface.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
 
 namespace newtop::phase {
 namespace {
+
+/// The largest coefficient of the surface function (SurfaceFunction): its scale() squares the
+/// coefficients (Eigen's norm()), which must stay below the largest double (1.8e308) with room for
+/// three of them: 1e150.
+constexpr double kMaxCoefficient = 1e150;
 
 constexpr std::string_view kComponents = "a component (omega1..3, m1..3, gamma1..3, normal1..3)";
 
@@ -128,6 +134,20 @@ SurfaceFunction::SurfaceFunction(const Surface& s, const Body& body, bool with_n
   b_m = s.a_m + w;
   b_gamma = s.a_gamma;
   d = s.c + w.dot(body.gyrostat());
+  // Coefficients near the largest double (1e308*omega1 + 1e308*m1) would make g inf or NaN at
+  // ordinary states, and beyond 1e154 its scale() (1e243*omega1 = 0); at most kMaxCoefficient,
+  // g and its scale stay finite for |m|, |γ| up to 1e150.
+  const double largest = std::max({b_m.lpNorm<Eigen::Infinity>(), b_gamma.lpNorm<Eigen::Infinity>(),
+                                   b_normal.lpNorm<Eigen::Infinity>(), std::abs(d)});
+  const bool finite =
+      b_m.allFinite() && b_gamma.allFinite() && b_normal.allFinite() && std::isfinite(d);
+  if (!finite || !(largest <= kMaxCoefficient)) {
+    throw InputError("--surface: expected coefficients of at most " +
+                     format_number(kMaxCoefficient) +
+                     " in the Lie-Poisson variables (a_m + a_omega/I, a_gamma, c + a_omega.k/I), "
+                     "found " +
+                     format_number(largest) + " for '" + s.text + "' on this body");
+  }
 }
 
 }  // namespace newtop::phase

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <limits>
 
 #include "../io/file_check.hpp"
@@ -18,16 +19,22 @@ namespace {
 
 /// At most this many points (a CSV of 10⁸ rows is already 10 GB).
 constexpr double kMaxPoints = 1e8;
+/// At most this many values over all axes (1.6 GB): a zip of two axes of 10⁸ values, of K axes
+/// 2·10⁸/K values each. A grid of at most 10⁸ points never comes near it.
+constexpr double kMaxValues = 2e8;
 
 const std::vector<std::string> kTopKeys{"scenario",  "quantities", "combine", "axes",
                                         "stability", "integrate",  "level"};
 const std::vector<std::string> kAxisKeys{"key", "start", "stop", "count", "scale", "values"};
 
-/// start, stop, count and scale (linear or log) of one [[axes]] entry, or its values.
-std::vector<double> axis_values(io::TableReader& r) {
+/// start, stop, count and scale (linear or log) of one [[axes]] entry, or its values; admit(n)
+/// checks the number of values before they are made (it throws for too many).
+std::vector<double> axis_values(io::TableReader& r, const std::function<void(std::size_t)>& admit) {
   if (r.has("values")) {
     r.only({"key", "values"}, kAxisKeys, "values");
-    return r.numbers("values");
+    std::vector<double> v = r.numbers("values");
+    admit(v.size());
+    return v;
   }
   const double start = r.number("start");
   const double stop = r.number("stop");
@@ -36,6 +43,10 @@ std::vector<double> axis_values(io::TableReader& r) {
   if (scale != "linear" && scale != "log") {
     r.fail("scale", "expected \"linear\" or \"log\", found \"" + scale + "\"");
   }
+  if (scale == "linear" && !std::isfinite(stop - start)) {
+    r.fail("stop", "expected stop - start finite (a range of doubles), found start = " +
+                       format_number(start) + ", stop = " + format_number(stop));
+  }
   if (count == 1 && start != stop) {
     r.fail("count", "expected count >= 2 for start != stop, found 1");
   }
@@ -43,6 +54,7 @@ std::vector<double> axis_values(io::TableReader& r) {
     r.fail(start > 0 ? "stop" : "start", "expected a number > 0 with scale = \"log\", found " +
                                              format_number(start > 0 ? stop : start));
   }
+  admit(static_cast<std::size_t>(count));
   std::vector<double> v(static_cast<std::size_t>(count));
   for (std::int64_t i = 0; i < count; ++i) {
     // Computed from the index (never accumulated), the ends exact; a linear axis gives the decimal
@@ -152,6 +164,18 @@ void read_level(io::TableReader& top, SweepFile& s) {
   s.level = level;
 }
 
+[[noreturn]] void zip_mismatch(const SweepFile& s, const Axis& first, const std::string& key,
+                               std::size_t n) {
+  throw InputError(s.source + ": combine = \"zip\": expected axes of equal length, found " +
+                   std::to_string(first.values.size()) + " values of '" + first.key + "' and " +
+                   std::to_string(n) + " of '" + key + "'");
+}
+
+[[noreturn]] void too_many_points(const SweepFile& s, double points) {
+  throw InputError(s.source + ": [[axes]]: expected at most " + format_number(kMaxPoints) +
+                   " points, found " + format_number(points));
+}
+
 void read_axes(const toml::table& doc, SweepFile& s) {
   const toml::node* n = doc.get("axes");
   if (!n) return;
@@ -160,6 +184,8 @@ void read_axes(const toml::table& doc, SweepFile& s) {
     io::TableReader(doc, s.source, "")
         .fail("axes", "expected [[axes]] tables, found " + io::describe(*n));
   }
+  double points = 1;  // the grid's points over the axes read so far
+  double values = 0;  // the values of the axes read so far
   for (std::size_t i = 0; i < list->size(); ++i) {
     io::TableReader r(*list->get(i)->as_table(), s.source, "axes[" + std::to_string(i + 1) + "]");
     r.check_keys(kAxisKeys);
@@ -167,7 +193,22 @@ void read_axes(const toml::table& doc, SweepFile& s) {
     for (const Axis& b : s.axes) {
       if (b.key == a.key) r.fail("key", "expected each key once, found '" + a.key + "' again");
     }
-    a.values = axis_values(r);
+    // The sizes are checked before the values are made: axes whose points are refused never
+    // allocate them (three axes of 10⁸ values would take 2.4 GB), and the values of all axes
+    // together are bounded (a zip of K axes of N values holds K N of them).
+    a.values = axis_values(r, [&](std::size_t length) {
+      if (s.combine == Combine::zip && !s.axes.empty() && length != s.axes.front().values.size()) {
+        zip_mismatch(s, s.axes.front(), a.key, length);
+      }
+      points *= static_cast<double>(length);
+      if (s.combine == Combine::grid && points > kMaxPoints) too_many_points(s, points);
+      values += static_cast<double>(length);
+      if (values > kMaxValues) {
+        throw InputError(s.source + ": [[axes]]: expected at most " + format_number(kMaxValues) +
+                         " values over all axes, found " + format_number(values) + " by '" + a.key +
+                         "'");
+      }
+    });
     r.finish();
     s.axes.push_back(std::move(a));
   }
@@ -175,7 +216,7 @@ void read_axes(const toml::table& doc, SweepFile& s) {
 
 }  // namespace
 
-SweepFile load_sweep(const std::string& path) {
+SweepFile read_sweep(const std::string& path) {
   SweepFile s;
   s.source = path;
   s.text = io::read_regular_file(path, io::kMaxTomlBytes, "sweep file");
@@ -217,20 +258,6 @@ SweepFile load_sweep(const std::string& path) {
   read_stability(top, s);
   read_integrate(top, s);
   read_level(top, s);
-  double points = 1;
-  for (const Axis& a : s.axes) {
-    if (s.combine == Combine::zip && a.values.size() != s.axes.front().values.size()) {
-      throw InputError(path + ": combine = \"zip\": expected axes of equal length, found " +
-                       std::to_string(s.axes.front().values.size()) + " values of '" +
-                       s.axes.front().key + "' and " + std::to_string(a.values.size()) + " of '" +
-                       a.key + "'");
-    }
-    points *= static_cast<double>(a.values.size());
-  }
-  if (s.combine == Combine::grid && points > kMaxPoints) {
-    throw InputError(path + ": [[axes]]: expected at most " + format_number(kMaxPoints) +
-                     " points, found " + format_number(points));
-  }
   for (const Axis& a : s.axes) {
     if (a.key.rfind("stability.", 0) == 0 && !is_option_key(a.key)) {
       throw InputError(path + ": [[axes]] key '" + a.key +
@@ -245,6 +272,11 @@ SweepFile load_sweep(const std::string& path) {
     }
   }
   s.base_text = io::read_regular_file(s.base_source, io::kMaxTomlBytes, "scenario file");
+  return s;
+}
+
+SweepFile load_sweep(const std::string& path) {
+  SweepFile s = read_sweep(path);
   check_points(s);
   return s;
 }

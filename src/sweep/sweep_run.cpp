@@ -3,11 +3,15 @@
 
 #include <algorithm>
 #include <atomic>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <mutex>
 #include <sstream>
+#include <string_view>
 
 #include "newtop/integrate/ensemble.hpp"
 #include "newtop/sweep/sweep.hpp"
@@ -20,77 +24,131 @@
 namespace newtop::sweep {
 namespace {
 
-constexpr const char* kMagic = "newtop-sweep-checkpoint 1";
+constexpr const char* kMagic = "newtop-sweep-checkpoint 2";
 
-/// FNV-1a of the sweep file, the base scenario and the columns: a checkpoint of another sweep is
+/// FNV-1a, 64 bits, of a sequence of texts (each closed by a 0xff byte, which UTF-8 never holds).
+class Fnv {
+ public:
+  Fnv& add(std::string_view text) {
+    for (const unsigned char c : text) {
+      h_ ^= c;
+      h_ *= 1099511628211ull;
+    }
+    h_ ^= 0xff;
+    h_ *= 1099511628211ull;
+    return *this;
+  }
+  std::uint64_t value() const { return h_; }
+  std::string hex() const {
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h_));
+    return buf;
+  }
+
+ private:
+  std::uint64_t h_ = 14695981039346656037ull;
+};
+
+/// The hash of the sweep file, the base scenario and the columns: a checkpoint of another sweep is
 /// refused.
 std::string fingerprint(const SweepFile& s) {
-  std::uint64_t h = 14695981039346656037ull;
-  auto add = [&](const std::string& text) {
-    for (const unsigned char c : text) {
-      h ^= c;
-      h *= 1099511628211ull;
-    }
-    h ^= 0xff;
-    h *= 1099511628211ull;
-  };
-  add(s.text);
-  add(s.base_text);
-  for (const auto& c : quantity_columns(s)) add(c);
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
+  Fnv h;
+  h.add(s.text).add(s.base_text);
+  for (const auto& c : quantity_columns(s)) h.add(c);
+  return h.hex();
 }
 
-/// One finished point: `index<TAB>status<TAB>v1,v2,…` (shortest round-trip numbers).
-std::string checkpoint_line(std::size_t index, const PointResult& r) {
+/// One finished point: `index<TAB>status<TAB>v1,v2,…<TAB>check` (shortest round-trip numbers),
+/// `check` the hash of the key (the sweep's fingerprint in a checkpoint) and the rest of the line:
+/// a line edited or damaged after it was written does not read back.
+std::string checkpoint_line(std::size_t index, const PointResult& r, std::string_view key) {
   std::string line = std::to_string(index) + '\t' + r.status + '\t';
   for (std::size_t k = 0; k < r.values.size(); ++k) {
     line += (k ? "," : "") +
             (std::isnan(r.values[k]) ? std::string("nan") : format_number(r.values[k]));
   }
-  return line + '\n';
+  return line + '\t' + Fnv().add(key).add(line).hex() + '\n';
 }
 
-/// One line of the checkpoint back: nullopt for a line that is not whole.
-std::optional<std::pair<std::size_t, PointResult>> parse_line(const std::string& line,
-                                                              std::size_t width) {
-  std::istringstream f(line);
-  std::string index_text, status, values;
-  if (!std::getline(f, index_text, '\t') || !std::getline(f, status, '\t')) return std::nullopt;
-  std::getline(f, values);
-  if (index_text.empty() || index_text.size() > 18 ||
-      index_text.find_first_not_of("0123456789") != std::string::npos) {
+/// A value as written by checkpoint_line: `nan` or a whole number (std::from_chars, round trip).
+std::optional<double> parse_value(std::string_view cell) {
+  if (cell == "nan") return std::numeric_limits<double>::quiet_NaN();
+  double v = 0;
+  const auto r = std::from_chars(cell.data(), cell.data() + cell.size(), v);
+  if (cell.empty() || r.ec != std::errc() || r.ptr != cell.data() + cell.size()) {
     return std::nullopt;
   }
-  PointResult r{status, {}};
-  std::istringstream v(values);
-  std::string cell;
-  while (std::getline(v, cell, ',')) r.values.push_back(std::strtod(cell.c_str(), nullptr));
-  if (status == "ok" ? r.values.size() != width : !r.values.empty()) return std::nullopt;
-  return std::make_pair(static_cast<std::size_t>(std::stoull(index_text)), std::move(r));
+  return v;
 }
 
-/// Reads the finished points back; a last line cut short by a kill is ignored.
+/// One line of checkpoint_line back (without its newline): nullopt unless it is whole, its check
+/// matches and it holds `width` values for the status ok (none for another status).
+std::optional<std::pair<std::size_t, PointResult>> parse_line(std::string_view line,
+                                                              std::size_t width,
+                                                              std::string_view key) {
+  // The check as a number (16 lowercase hex digits), compared as one.
+  const std::size_t check = line.rfind('\t');
+  if (check == std::string_view::npos) return std::nullopt;
+  const std::string_view check_text = line.substr(check + 1);
+  std::uint64_t written = 0;
+  const auto parsed =
+      std::from_chars(check_text.data(), check_text.data() + check_text.size(), written, 16);
+  if (check_text.size() != 16 ||
+      check_text.find_first_not_of("0123456789abcdef") != std::string_view::npos ||
+      parsed.ptr != check_text.data() + check_text.size() ||
+      written != Fnv().add(key).add(line.substr(0, check)).value()) {
+    return std::nullopt;
+  }
+  const std::size_t tab1 = line.find('\t');
+  const std::size_t tab2 = line.find('\t', tab1 + 1);
+  if (tab2 >= check) return std::nullopt;
+  const std::string_view index_text = line.substr(0, tab1);
+  const std::string_view values = line.substr(tab2 + 1, check - tab2 - 1);
+  if (index_text.empty() || index_text.size() > 18 ||
+      index_text.find_first_not_of("0123456789") != std::string_view::npos) {
+    return std::nullopt;
+  }
+  PointResult r{std::string(line.substr(tab1 + 1, tab2 - tab1 - 1)), {}};
+  if (r.status.empty()) return std::nullopt;
+  for (std::size_t begin = 0; !values.empty() && begin <= values.size();) {
+    const std::size_t end = std::min(values.find(',', begin), values.size());
+    const std::optional<double> v = parse_value(values.substr(begin, end - begin));
+    if (!v) return std::nullopt;
+    r.values.push_back(*v);
+    begin = end + 1;
+  }
+  if (r.status == "ok" ? r.values.size() != width : !r.values.empty()) return std::nullopt;
+  return std::make_pair(static_cast<std::size_t>(std::stoull(std::string(index_text))),
+                        std::move(r));
+}
+
+/// Reads the finished points back; a last line cut short by a kill (no newline) is ignored, any
+/// other line that does not read back as a point of this sweep refuses the checkpoint.
 std::size_t read_checkpoint(const SweepFile& s, const std::string& path,
                             std::vector<std::optional<PointResult>>& done) {
   std::ifstream in(path);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string key = fingerprint(s);
   std::istringstream lines(text);
   std::string line;
-  if (!std::getline(lines, line) || line != std::string(kMagic) + ' ' + fingerprint(s)) {
+  if (!std::getline(lines, line) || line != std::string(kMagic) + ' ' + key) {
     throw InputError("--resume: " + path +
                      " is the checkpoint of another sweep (or not one); "
                      "delete it to start again");
   }
   const std::size_t width = quantity_columns(s).size();
-  std::size_t count = 0;
+  std::size_t count = 0, number = 1;
   std::size_t pos = line.size() + 1;
   while (std::getline(lines, line)) {
     pos += line.size() + 1;
+    ++number;
     if (pos > text.size() + 1 || text[pos - 1] != '\n') break;  // no newline: cut by the kill
-    auto r = parse_line(line, width);
-    if (!r || r->first >= done.size()) break;
+    auto r = parse_line(line, width, key);
+    if (!r || r->first >= done.size()) {
+      throw InputError("--resume: " + path + " line " + std::to_string(number) +
+                       ": expected a finished point of this sweep, found a damaged or edited "
+                       "line; delete the checkpoint to start again");
+    }
     if (!done[r->first]) ++count;
     done[r->first] = std::move(r->second);
   }
@@ -100,7 +158,7 @@ std::size_t read_checkpoint(const SweepFile& s, const std::string& path,
 }  // namespace
 
 SweepLedger::SweepLedger(const SweepFile& s, const RunOptions& o)
-    : options_(o), done_(point_count(s)) {
+    : options_(o), key_(fingerprint(s)), done_(point_count(s)) {
   const std::size_t n = done_.size();
   if (!o.checkpoint.empty()) {
     const bool exists = std::filesystem::exists(o.checkpoint);
@@ -115,9 +173,9 @@ SweepLedger::SweepLedger(const SweepFile& s, const RunOptions& o)
     const std::string tmp = o.checkpoint + ".new";
     {
       std::ofstream fresh(tmp, std::ios::trunc);
-      fresh << kMagic << ' ' << fingerprint(s) << '\n';
+      fresh << kMagic << ' ' << key_ << '\n';
       for (std::size_t i = 0; i < n; ++i) {
-        if (done_[i]) fresh << checkpoint_line(i, *done_[i]);
+        if (done_[i]) fresh << checkpoint_line(i, *done_[i], key_);
       }
       if (!fresh.flush()) throw InputError("--out: cannot write " + tmp);
     }
@@ -133,7 +191,7 @@ SweepLedger::SweepLedger(const SweepFile& s, const RunOptions& o)
 void SweepLedger::record(std::size_t index, PointResult r) {
   const std::lock_guard<std::mutex> guard(lock_);
   if (checkpoint_.is_open()) {
-    checkpoint_ << checkpoint_line(index, r);
+    checkpoint_ << checkpoint_line(index, r, key_);
     checkpoint_.flush();
   }
   done_[index] = std::move(r);
@@ -164,12 +222,14 @@ PointResult evaluate_point_safely(const SweepFile& s, std::size_t index) {
 }
 
 std::string encode_result(std::size_t index, const PointResult& r) {
-  return checkpoint_line(index, r);
+  return checkpoint_line(index, r, "");
 }
 
 std::optional<std::pair<std::size_t, PointResult>> decode_result(const std::string& line,
                                                                  std::size_t width) {
-  return parse_line(line, width);
+  std::string_view l(line);
+  if (!l.empty() && l.back() == '\n') l.remove_suffix(1);
+  return parse_line(l, width, "");
 }
 
 std::size_t batch_size(const SweepFile& s, std::size_t count, int workers) {

@@ -270,6 +270,16 @@ TEST(Sweep, BadSweepFilesGetOneLineAndNoOutput) {
        base + "quantities = [\"drift\"]\ncombine = \"zip\"\n" + axis +
            "values = [2.2, 2.3]\n[[axes]]\nkey = \"body.inertia[1]\"\nvalues = [1.5]\n",
        "zip"},
+      // Found by tests/fuzz/fuzz_sweep.cpp: the middle value of this range was inf.
+      {"range_overflows",
+       base + "quantities = [\"drift\"]\n" + axis + "start = -1.7e308\nstop = 1.7e308\ncount = 3\n",
+       "stop - start"},
+      // Refused before the values are made (they would take 1.6 GB).
+      {"huge_grid",
+       base + "quantities = [\"drift\"]\n" + axis + "start = 1\nstop = 2\ncount = 2\n" +
+           "[[axes]]\nkey = \"body.inertia[1]\"\nstart = 1\nstop = 2\ncount = 100000000\n" +
+           "[[axes]]\nkey = \"body.inertia[0]\"\nstart = 1\nstop = 2\ncount = 100000000\n",
+       "points"},
   };
   for (const BadSweep& c : cases) {
     const fs::path f = write_file(std::string(c.name) + ".toml", c.text);

@@ -65,6 +65,10 @@ const std::vector<std::string>& known_quantities();
 /// line naming the key, what was expected and what was found.
 SweepFile load_sweep(const std::string& path);
 
+/// The first part of load_sweep: reads and checks the sweep file itself and reads the base
+/// scenario's text, without building the points' scenarios (input_files stays empty).
+SweepFile read_sweep(const std::string& path);
+
 /// The number of points: the product of the axes' lengths (grid) or their common length (zip).
 std::size_t point_count(const SweepFile& s);
 
@@ -128,6 +132,7 @@ class SweepLedger {
 
  private:
   RunOptions options_;
+  std::string key_;  ///< the sweep's fingerprint, which every checkpoint line's check covers
   std::vector<std::optional<PointResult>> done_;
   std::vector<std::size_t> todo_;
   std::size_t resumed_ = 0, finished_ = 0;
@@ -138,8 +143,9 @@ class SweepLedger {
 /// evaluate_point, with any exception turned into the status `error: …` (one CSV cell).
 PointResult evaluate_point_safely(const SweepFile& s, std::size_t index);
 
-/// One result as one line of text (the checkpoint's format: index, status and the values with 17
-/// significant digits) and back (nullopt for a line that is not whole); `width` is the number of
+/// One result as one line of text (the checkpoint's format: index, status, the values in shortest
+/// round-trip form and a check of the line) and back (nullopt for a line that is not whole, whose
+/// check does not match or whose values are not `width` numbers); `width` is the number of
 /// quantity columns.
 std::string encode_result(std::size_t index, const PointResult& r);
 std::optional<std::pair<std::size_t, PointResult>> decode_result(const std::string& line,
