@@ -37,6 +37,7 @@ struct AnalyticArgs {
   std::string scenario;
   std::optional<double> t_end;
   std::optional<int> samples;
+  std::optional<int> curve;
   std::optional<std::string> times;
   bool json = false;
 };
@@ -78,6 +79,38 @@ io::Json state_json(const Body& b, const State& s) {
 
 io::Json nullable(double x) { return std::isfinite(x) ? io::Json(x) : io::Json(nullptr); }
 
+/// The Lagrange top's Euler angles (φ, θ, ψ) and its symmetry axis e3 in the fixed frame N (z along
+/// e: R e3 = q e3) at the times; null where γ3 = ±1 leaves φ and ψ undefined.
+io::Json euler_angles_json(const LagrangeCase& l, const std::vector<double>& times) {
+  io::Json euler = io::Json::array();
+  for (double t : times) {
+    const Vec3 angles = lagrange_euler_angles(l, t);
+    const Vec3 axis = from_euler_313(angles) * Vec3::UnitZ();
+    const bool finite = angles.allFinite() && axis.allFinite();
+    euler.push_back({{"t", t},
+                     {"phi", finite ? io::Json(angles[0]) : io::Json(nullptr)},
+                     {"theta", finite ? io::Json(angles[1]) : io::Json(nullptr)},
+                     {"psi", finite ? io::Json(angles[2]) : io::Json(nullptr)},
+                     {"axis", finite ? io::to_json(axis) : io::Json(nullptr)}});
+  }
+  return euler;
+}
+
+/// The closed form on --curve N equally spaced times over the samples' span (analytic_curve).
+io::Json curve_json(const Body& b, const AnalyticSolution& sol, const std::vector<double>& times,
+                    int n) {
+  const AnalyticCurve c = analytic_curve(sol, times.front(), times.back(), n);
+  io::Json om = io::Json::array(), ga = io::Json::array();
+  for (const State& x : c.state) {
+    om.push_back(io::to_json(omega(b, x)));
+    ga.push_back(io::to_json(x.gamma));
+  }
+  io::Json j{{"t", c.t}, {"omega", om}, {"gamma", ga}};
+  if (const auto* l = std::get_if<LagrangeCase>(&sol))
+    j["euler_angles"] = euler_angles_json(*l, c.t);
+  return j;
+}
+
 void add_case_details(io::Json& j, const AnalyticSolution& sol, const std::vector<double>& times) {
   j["period"] = nullptr;
   j["nutation_period"] = nullptr;
@@ -96,21 +129,10 @@ void add_case_details(io::Json& j, const AnalyticSolution& sol, const std::vecto
     const LagrangeQuartic& q = l->quartic;
     j["E"] = q.E, j["a"] = q.a, j["a1"] = q.a1, j["b"] = q.b, j["c"] = q.c, j["r"] = q.r;
     j["quartic_roots"] = l->real_roots;
-    io::Json g = io::Json::array(), euler = io::Json::array();
-    for (double t : times) {
-      g.push_back({{"t", t}, {"gamma3", lagrange_gamma3(*l, t)[0]}});
-      // (φ, θ, ψ) and the symmetry axis e3 in the fixed frame N (z along e): R e3 = q e3.
-      const Vec3 angles = lagrange_euler_angles(*l, t);
-      const Vec3 axis = from_euler_313(angles) * Vec3::UnitZ();
-      const bool finite = angles.allFinite() && axis.allFinite();  // γ3 = ±1: φ, ψ undefined
-      euler.push_back({{"t", t},
-                       {"phi", finite ? io::Json(angles[0]) : io::Json(nullptr)},
-                       {"theta", finite ? io::Json(angles[1]) : io::Json(nullptr)},
-                       {"psi", finite ? io::Json(angles[2]) : io::Json(nullptr)},
-                       {"axis", finite ? io::to_json(axis) : io::Json(nullptr)}});
-    }
+    io::Json g = io::Json::array();
+    for (double t : times) g.push_back({{"t", t}, {"gamma3", lagrange_gamma3(*l, t)[0]}});
     j["gamma3"] = g;
-    j["euler_angles"] = euler;
+    j["euler_angles"] = euler_angles_json(*l, times);
   } else if (const auto* b = std::get_if<BrunCase>(&sol)) {
     add_brun_details(j, *b, times);
   } else if (const auto* bp = std::get_if<BrunPrymSolution>(&sol)) {
@@ -180,6 +202,10 @@ int run(const AnalyticArgs& a) {
   io::Json j;
   j["case"] = to_string(det.kind);
   j["reason"] = det.reason;
+  if (a.curve && !det.solved) {
+    throw InputError("--curve: expected a solved case to draw, found case " +
+                     std::string(to_string(det.kind)) + " (" + det.reason + ")");
+  }
   if (!det.solved) {
     j["period"] = nullptr, j["nutation_period"] = nullptr;
     j["turning_points"] = io::Json::array(), j["samples"] = io::Json::array();
@@ -205,6 +231,11 @@ int run(const AnalyticArgs& a) {
   j["samples"] = c.samples;
   j["max_abs_error"] = c.max_err ? io::Json(*c.max_err) : io::Json(nullptr);
   j["seconds_per_sample"] = times.empty() ? io::Json(nullptr) : io::Json(c.seconds_per_sample);
+  if (a.curve && times.empty()) {
+    throw InputError(
+        "--curve: expected a time span to draw over, found none (give --t-end or --times)");
+  }
+  if (a.curve) j["curve"] = curve_json(sc.model.body(), sol, times, *a.curve);
   const bool failed = !times.empty() && c.reference.status != Status::finished;
   if (!times.empty()) {
     j["reference"] = {{"method", "rkf78"},
@@ -236,7 +267,11 @@ const RegisterCommand reg{Command{
       auto* n = sub.add_option("--samples", a->samples, "number of sample intervals (default 20)");
       auto* t = sub.add_option("--times", a->times, "comma-separated sample times");
       n->excludes(t);
-      sub.add_flag("--json", a->json, "print one JSON object");
+      auto* curve = sub.add_option(
+          "--curve", a->curve,
+          "with --json: also the closed form alone at N equally spaced times over the samples' "
+          "span (\"curve\"), for drawing");
+      curve->needs(sub.add_flag("--json", a->json, "print one JSON object"));
       return [a] { return run(*a); };
     }}};
 

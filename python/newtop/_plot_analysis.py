@@ -273,8 +273,12 @@ def analytic_figure(res: Result):
                                  "samples to draw (quadratures not implemented for this case)")
     t = np.array([x["t"] for x in s])
     dense, needed = analytic_sampling(s)
+    curve = d.get("curve")  # newtop analytic --curve N: the closed form alone, densely
+    if curve:
+        dense = True
     dots = np.arange(0, len(t), max(1, -(-len(t) // MAX_REFERENCE_DOTS)))  # the curves stay visible
-    euler = [e for e in d.get("euler_angles") or [] if e.get("theta") is not None]
+    source = (curve or {}).get("euler_angles") or d.get("euler_angles") or []
+    euler = [e for e in source if e.get("theta") is not None]
     rows = 2 if euler else 1
     fig = new_figure(13, 4.5 * rows)
     for k, (key, names) in enumerate((("omega", "pqr"), ("gamma", ("γ1", "γ2", "γ3")))):
@@ -282,7 +286,11 @@ def analytic_figure(res: Result):
         a = np.array([x["analytic"][key] for x in s])
         n = np.array([x["numeric"][key] for x in s])
         for i, nm in enumerate(names):
-            if dense:
+            if curve:
+                line, = ax.plot(curve["t"], np.array(curve[key])[:, i],
+                                label=f"{nm} closed form", linewidth=1.0)
+                ax.plot(t, a[:, i], "o", markersize=3, color=line.get_color())
+            elif dense:
                 ax.plot(t, a[:, i], label=f"{nm} closed form", linewidth=1.2)
             else:  # a line between samples a spin apart would draw a zig-zag that is not there
                 ax.plot(t, a[:, i], "o", markersize=3.5, label=f"{nm} closed form")
@@ -303,7 +311,8 @@ def analytic_figure(res: Result):
     if euler:
         draw_euler_angles(fig, euler, "-" if dense else "o")
     fig.suptitle(f"newtop analytic: case {d['case']}" + (
-        "" if dense else f" (samples too sparse for a curve: ask --samples {needed} or more)"))
+        "" if dense else f" (samples too sparse for a curve: ask --curve {needed} or --samples "
+        f"{needed})"))
     return fig
 
 

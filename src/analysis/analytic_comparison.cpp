@@ -59,4 +59,18 @@ AnalyticComparison compare_analytic(const QuadraticModel& model, const State& x0
   return c;
 }
 
+AnalyticCurve analytic_curve(const AnalyticSolution& sol, double t0, double t1, int n) {
+  if (n < 2) throw InputError("curve: expected at least 2 points, found " + std::to_string(n));
+  if (!(std::isfinite(t0) && std::isfinite(t1))) {
+    throw InputError("curve: expected a finite time span");
+  }
+  AnalyticCurve c;
+  for (int k = 0; k < n; ++k) {
+    const double t = k == n - 1 ? t1 : t0 + (t1 - t0) * k / (n - 1);
+    c.t.push_back(t);
+    c.state.push_back(analytic_state(sol, t));
+  }
+  return c;
+}
+
 }  // namespace newtop

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -44,6 +45,56 @@ TEST(AnalyticEuler, LagrangeJsonHasTheEulerAnglesAndTheAxisAtTheSampleTimes) {
   }
   // The precession advances: the axis goes round e (not a fixed point of the picture).
   EXPECT_GT(std::abs(euler.back().at("phi").get<double>()), 0.1);
+}
+
+// The curve of --curve is the closed form between the samples: at its ends the samples' own
+// states (same function, same t: the same bits), and in between it agrees with an independent
+// rkf78 run at tol 1e-13 to the examples' bound for the integrable cases (examples/CMakeLists.txt:
+// the reference's global error over 20 time units is 1e-13 to 6e-12; 1e-10).
+constexpr double kReferenceAgreement = 1e-10;
+
+TEST(AnalyticEuler, CurveIsTheClosedFormBetweenTheSamples) {
+  using newtop::test::run_newtop;
+  const std::string ex = newtop::test::example_path("analytic_lagrange.toml");
+  const auto r = run_newtop("analytic " + ex + " --samples 4 --curve 41 --json",
+                            newtop::test::Stderr::separate);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& curve = j.at("curve");
+  const auto& samples = j.at("samples");
+  ASSERT_EQ(curve.at("t").size(), 41u);
+  ASSERT_EQ(curve.at("euler_angles").size(), 41u);
+  EXPECT_EQ(curve.at("gamma")[0], samples[0].at("analytic").at("gamma"));
+  EXPECT_EQ(curve.at("gamma")[40], samples.back().at("analytic").at("gamma"));
+  EXPECT_EQ(curve.at("t")[40].get<double>(), samples.back().at("t").get<double>());
+  for (const int k : {7, 23, 33}) {  // between the samples
+    const double t = curve.at("t")[k].get<double>();
+    char times[64];
+    std::snprintf(times, sizeof(times), "%.17g", t);
+    const auto ref = run_newtop("analytic " + ex + " --times " + times + " --json",
+                                newtop::test::Stderr::separate);
+    ASSERT_EQ(ref.code, 0) << ref.err;
+    const auto& numeric = nlohmann::json::parse(ref.out).at("samples")[0].at("numeric");
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(curve.at("gamma")[k][i].get<double>(), numeric.at("gamma")[i].get<double>(),
+                  kReferenceAgreement);
+      EXPECT_NEAR(curve.at("omega")[k][i].get<double>(), numeric.at("omega")[i].get<double>(),
+                  kReferenceAgreement);
+    }
+  }
+}
+
+TEST(AnalyticEuler, CurveNeedsJsonAndASolvedCase) {
+  using newtop::test::run_newtop;
+  const auto no_json =
+      run_newtop("analytic " + newtop::test::example_path("analytic_lagrange.toml") + " --curve 10",
+                 newtop::test::Stderr::separate);
+  EXPECT_EQ(no_json.code, 2);
+  const auto small = run_newtop(
+      "analytic " + newtop::test::example_path("analytic_lagrange.toml") + " --curve 1 --json",
+      newtop::test::Stderr::separate);
+  EXPECT_EQ(small.code, 2);
+  EXPECT_NE(small.err.find("--curve"), std::string::npos) << small.err;
 }
 
 }  // namespace

@@ -42,4 +42,13 @@ AnalyticComparison compare_analytic(const QuadraticModel& model, const State& x0
                                     const AnalyticSolution& sol, const std::vector<double>& times,
                                     IntegrateOptions options = {});
 
+/// The closed form at n equally spaced times from t0 to t1 (n >= 2), each time computed as
+/// t0 + k (t1 − t0)/(n − 1): a curve dense enough to draw where the samples of a comparison are a
+/// spin period or more apart.
+struct AnalyticCurve {
+  std::vector<double> t;
+  std::vector<State> state;
+};
+AnalyticCurve analytic_curve(const AnalyticSolution& sol, double t0, double t1, int n);
+
 }  // namespace newtop
