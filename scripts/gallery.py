@@ -159,7 +159,7 @@ def phase_figures(g: Gallery):
 
 def other_figures(g: Gallery):
     c = g.json("analytic.json", "analytic", example("analytic_lagrange.toml"), "--samples", "40",
-               "--curve", "2000")
+               "--dense", "2000")
     g.add("analytic_lagrange.png", plot.figure(results.load(g.file("analytic.json"))), [c],
           ["closed form (lines), rkf78 (dots)", "Difference", "Nutation θ (cos θ = γ3)",
            "Trace of the symmetry axis e3"], ["t", "θ (deg)"])

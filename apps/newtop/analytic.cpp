@@ -96,7 +96,7 @@ io::Json euler_angles_json(const LagrangeCase& l, const std::vector<double>& tim
   return euler;
 }
 
-/// The closed form on --curve N equally spaced times over the samples' span (analytic_curve).
+/// The closed form on --dense N equally spaced times over the samples' span (analytic_curve).
 io::Json curve_json(const Body& b, const AnalyticSolution& sol, const std::vector<double>& times,
                     int n) {
   const AnalyticCurve c = analytic_curve(sol, times.front(), times.back(), n);
@@ -203,7 +203,7 @@ int run(const AnalyticArgs& a) {
   j["case"] = to_string(det.kind);
   j["reason"] = det.reason;
   if (a.curve && !det.solved) {
-    throw InputError("--curve: expected a solved case to draw, found case " +
+    throw InputError("--dense: expected a solved case to draw, found case " +
                      std::string(to_string(det.kind)) + " (" + det.reason + ")");
   }
   if (!det.solved) {
@@ -233,9 +233,9 @@ int run(const AnalyticArgs& a) {
   j["seconds_per_sample"] = times.empty() ? io::Json(nullptr) : io::Json(c.seconds_per_sample);
   if (a.curve && times.empty()) {
     throw InputError(
-        "--curve: expected a time span to draw over, found none (give --t-end or --times)");
+        "--dense: expected a time span to draw over, found none (give --t-end or --times)");
   }
-  if (a.curve) j["curve"] = curve_json(sc.model.body(), sol, times, *a.curve);
+  if (a.curve) j["dense"] = curve_json(sc.model.body(), sol, times, *a.curve);
   const bool failed = !times.empty() && c.reference.status != Status::finished;
   if (!times.empty()) {
     j["reference"] = {{"method", "rkf78"},
@@ -268,9 +268,9 @@ const RegisterCommand reg{Command{
       auto* t = sub.add_option("--times", a->times, "comma-separated sample times");
       n->excludes(t);
       auto* curve = sub.add_option(
-          "--curve", a->curve,
+          "--dense", a->curve,
           "with --json: also the closed form alone at N equally spaced times over the samples' "
-          "span (\"curve\"), for drawing");
+          "span (\"dense\"), for drawing");
       curve->needs(sub.add_flag("--json", a->json, "print one JSON object"));
       return [a] { return run(*a); };
     }}};

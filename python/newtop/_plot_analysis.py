@@ -273,7 +273,7 @@ def analytic_figure(res: Result):
                                  "samples to draw (quadratures not implemented for this case)")
     t = np.array([x["t"] for x in s])
     dense, needed = analytic_sampling(s)
-    curve = d.get("curve")  # newtop analytic --curve N: the closed form alone, densely
+    curve = d.get("dense")  # newtop analytic --dense N: the closed form alone, densely
     if curve:
         dense = True
     dots = np.arange(0, len(t), max(1, -(-len(t) // MAX_REFERENCE_DOTS)))  # the curves stay visible
@@ -311,7 +311,7 @@ def analytic_figure(res: Result):
     if euler:
         draw_euler_angles(fig, euler, "-" if dense else "o")
     fig.suptitle(f"newtop analytic: case {d['case']}" + (
-        "" if dense else f" (samples too sparse for a curve: ask --curve {needed} or --samples "
+        "" if dense else f" (samples too sparse for a curve: ask --dense {needed} or --samples "
         f"{needed})"))
     return fig
 

@@ -47,7 +47,7 @@ TEST(AnalyticEuler, LagrangeJsonHasTheEulerAnglesAndTheAxisAtTheSampleTimes) {
   EXPECT_GT(std::abs(euler.back().at("phi").get<double>()), 0.1);
 }
 
-// The curve of --curve is the closed form between the samples: at its ends the samples' own
+// The curve of --dense is the closed form between the samples: at its ends the samples' own
 // states (same function, same t: the same bits), and in between it agrees with an independent
 // rkf78 run at tol 1e-13 to the examples' bound for the integrable cases (examples/CMakeLists.txt:
 // the reference's global error over 20 time units is 1e-13 to 6e-12; 1e-10).
@@ -56,11 +56,11 @@ constexpr double kReferenceAgreement = 1e-10;
 TEST(AnalyticEuler, CurveIsTheClosedFormBetweenTheSamples) {
   using newtop::test::run_newtop;
   const std::string ex = newtop::test::example_path("analytic_lagrange.toml");
-  const auto r = run_newtop("analytic " + ex + " --samples 4 --curve 41 --json",
+  const auto r = run_newtop("analytic " + ex + " --samples 4 --dense 41 --json",
                             newtop::test::Stderr::separate);
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  const auto& curve = j.at("curve");
+  const auto& curve = j.at("dense");
   const auto& samples = j.at("samples");
   ASSERT_EQ(curve.at("t").size(), 41u);
   ASSERT_EQ(curve.at("euler_angles").size(), 41u);
@@ -87,14 +87,14 @@ TEST(AnalyticEuler, CurveIsTheClosedFormBetweenTheSamples) {
 TEST(AnalyticEuler, CurveNeedsJsonAndASolvedCase) {
   using newtop::test::run_newtop;
   const auto no_json =
-      run_newtop("analytic " + newtop::test::example_path("analytic_lagrange.toml") + " --curve 10",
+      run_newtop("analytic " + newtop::test::example_path("analytic_lagrange.toml") + " --dense 10",
                  newtop::test::Stderr::separate);
   EXPECT_EQ(no_json.code, 2);
   const auto small = run_newtop(
-      "analytic " + newtop::test::example_path("analytic_lagrange.toml") + " --curve 1 --json",
+      "analytic " + newtop::test::example_path("analytic_lagrange.toml") + " --dense 1 --json",
       newtop::test::Stderr::separate);
   EXPECT_EQ(small.code, 2);
-  EXPECT_NE(small.err.find("--curve"), std::string::npos) << small.err;
+  EXPECT_NE(small.err.find("--dense"), std::string::npos) << small.err;
 }
 
 }  // namespace
