@@ -14,8 +14,8 @@
 namespace {
 
 const newtop::Polyhedron& eros() {
-  static const newtop::Polyhedron p = newtop::io::load_polyhedron(
-      std::string(NEWTOP_DATA_DIR) + "/polyhedra/eros.face", 1.0);
+  static const newtop::Polyhedron p =
+      newtop::io::load_polyhedron(std::string(NEWTOP_DATA_DIR) + "/polyhedra/eros.face", 1.0);
   return p;
 }
 

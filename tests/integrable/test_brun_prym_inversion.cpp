@@ -29,9 +29,9 @@ constexpr double kAgreement = 1e-9;
 // at small t.
 constexpr double kFarTime = 1e4;
 constexpr double kFarAgreement = 1e-8;
-// Cost independent of t, counted in work rather than timed (timings belong to benchmarks): the query
-// at t = 1e4 takes no more continuation steps than this multiple of the most taken by the queries
-// at t ≤ one cell (each is a continuation of at most half a table spacing, whatever t was).
+// Cost independent of t, counted in work rather than timed (timings belong to benchmarks): the
+// query at t = 1e4 takes no more continuation steps than this multiple of the most taken by the
+// queries at t ≤ one cell (each is a continuation of at most half a table spacing, whatever t was).
 constexpr int kStepRatio = 3;
 // Euler–Poinsot limit: the deviation at t = 1 is linear in λ, so halving λ halves it (to the
 // O(λ²) remainder: 10% at λ = 0.04).
