@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "newtop/analysis/stability_spin.hpp"
+#include "summary.hpp"
 
 namespace newtop::app {
 namespace {
@@ -73,6 +74,7 @@ void grid_scan(const QuadraticModel& model, int axis, double omega0,
 }
 
 void print_omega_scan(std::ostream& os, const io::Json& scan) {
+  print_units_line(os);  // before the table, so that the table ends the output (as sweep's)
   os << "Omega                    max real part            linear     Lyapunov\n";
   for (const auto& p : scan) {
     os << std::left << std::setw(25) << format_number(p["omega"].get<double>()) << std::setw(25)

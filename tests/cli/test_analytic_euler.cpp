@@ -74,7 +74,8 @@ TEST(AnalyticEuler, CurveIsTheClosedFormBetweenTheSamples) {
     const auto ref = run_newtop("analytic " + ex + " --times " + times + " --json",
                                 newtop::test::Stderr::separate);
     ASSERT_EQ(ref.code, 0) << ref.err;
-    const auto& numeric = nlohmann::json::parse(ref.out).at("samples")[0].at("numeric");
+    const auto parsed = nlohmann::json::parse(ref.out);
+    const auto& numeric = parsed.at("samples")[0].at("numeric");
     for (int i = 0; i < 3; ++i) {
       EXPECT_NEAR(curve.at("gamma")[k][i].get<double>(), numeric.at("gamma")[i].get<double>(),
                   kReferenceAgreement);

@@ -215,7 +215,7 @@ def test_analytic_closed_form_is_a_curve_only_where_the_samples_resolve_it(tmp_p
     ax = sparse.axes[1]
     closed = [ln for ln in ax.get_lines() if ln.get_label().endswith("closed form")]
     assert closed and all(ln.get_linestyle() == "None" for ln in closed)  # markers, no zig-zag
-    assert "circles" in ax.get_title() and "--samples 201 or more" in sparse._suptitle.get_text()
+    assert "circles" in ax.get_title() and "--dense 201 or --samples 201" in sparse._suptitle.get_text()
     dense = plot.figure(results.load(analytic_json(tmp_path, 201)))
     ax = dense.axes[1]
     closed = [ln for ln in ax.get_lines() if ln.get_label().endswith("closed form")]
