@@ -262,6 +262,9 @@ BrunPrymSolution brun_prym_solution(const QuadraticModel& model, const State& x0
   if (s.curve.f == 0.0) {
     throw InputError("Brun inversion: the level f = 0 has the separation of brun_case.hpp");
   }
+  // The start's divisor first: a level whose real state carries no divisor (a degenerate torus,
+  // such as a permanent rotation) is refused here at once, before the periods are sought.
+  const BrunPrymDivisor d0 = brun_prym_divisor(s.curve, x0);
   s.torus = brun_prym_frequencies(model, x0);
   s.velocity_h = {Complex(0.0, -2.0 / s.curve.kappa), 0.0};
   s.velocity_c = {0.0, Complex(0.0, -4.0)};
@@ -271,7 +274,7 @@ BrunPrymSolution brun_prym_solution(const QuadraticModel& model, const State& x0
   const int mid = kGrid / 2;
   const BrunPrymLine l0 = brun_prym_line(s.curve, x0);
   const Line v0 = vec(l0);
-  s.table[index(mid, mid)] = {{0.0, 0.0}, line(v0 / v0.norm()), brun_prym_divisor(s.curve, x0), x0};
+  s.table[index(mid, mid)] = {{0.0, 0.0}, line(v0 / v0.norm()), d0, x0};
   int steps = 0;
   double residual = 0;
   const Eigen::Vector2d d1 = T.col(0) / kGrid, d2 = T.col(1) / kGrid;

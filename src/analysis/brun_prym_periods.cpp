@@ -8,8 +8,10 @@
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <numeric>
+#include <string>
 #include <vector>
 
 #include "newtop/analysis/brun_level.hpp"
@@ -40,6 +42,9 @@ constexpr double kSheet = 1e-6;
 // ~1e-12, a non-period misses by O(1).
 constexpr double kFlowTol = 1e-13;
 constexpr double kReturn = 1e-6;
+// Gauss pieces on one segment of a path: past this the path passes within ~1e-7 of the segment's
+// length of a branch point, i.e. two branch points have (nearly) merged and the curve is singular.
+constexpr double kMaxPieces = 1e5;
 
 struct Curve {
   const BrunCurve& k;
@@ -80,7 +85,17 @@ std::array<Complex, 2> path_integral(const Curve& g, const std::vector<Complex>&
   for (std::size_t s = 0; s + 1 < path.size(); ++s) {
     const Complex a = path[s], b = path[s + 1];
     const double near = std::max(std::min(g.clearance(a), g.clearance(b)), 1e-12);
-    const int n = std::max(1, static_cast<int>(std::ceil(std::abs(b - a) / (kSegment * near))));
+    const double pieces = std::ceil(std::abs(b - a) / (kSegment * near));
+    if (!(pieces <= kMaxPieces)) {  // branch points (nearly) merged: no torus to integrate on
+      char apart[32];
+      std::snprintf(apart, sizeof(apart), "%.3g", near);
+      throw InputError(
+          "Brun periods: the spectral curve is singular on this level (branch points " +
+          std::string(apart) +
+          " apart: a degenerate torus, such as a permanent rotation); no "
+          "quasi-periodic motion to invert");
+    }
+    const int n = std::max(1, static_cast<int>(pieces));
     for (int j = 0; j < n; ++j) {
       const Complex ua = a + (b - a) * (double(j) / n), ub = a + (b - a) * (double(j + 1) / n);
       const Complex mid = 0.5 * (ua + ub), half = 0.5 * (ub - ua);

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <nlohmann/json.hpp>
@@ -43,6 +44,19 @@ TEST(BrunCli, ReportsCurveRangesFrequenciesAndAgreement) {
     }
   }
   EXPECT_TRUE(j.contains("resonant") && j.contains("period_matrix") && j.contains("sign_flips"));
+}
+
+// A permanent rotation about an axis along γ (examples/stability_beletsky.toml: Brun's field, spin
+// about z with γ = z) lies on a degenerate torus: its spectral curve is singular (two branch points
+// merge), so there is nothing to invert; refused in one line (it once integrated the periods
+// around the merged points without end).
+TEST(BrunCli, DegenerateTorusIsRefusedInOneLine) {
+  const CliResult r = run_newtop(
+      "analytic " + newtop::test::example_path("stability_beletsky.toml") + " --samples 2",
+      newtop::test::Stderr::separate);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("spectral curve is singular"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
 TEST(BrunCli, NonzeroAreaIsSolvedByTheAbelPrymInversion) {
