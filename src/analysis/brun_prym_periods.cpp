@@ -42,9 +42,11 @@ constexpr double kSheet = 1e-6;
 // ~1e-12, a non-period misses by O(1).
 constexpr double kFlowTol = 1e-13;
 constexpr double kReturn = 1e-6;
-// Gauss pieces on one segment of a path: past this the path passes within ~1e-7 of the segment's
-// length of a branch point, i.e. two branch points have (nearly) merged and the curve is singular.
-constexpr double kMaxPieces = 1e5;
+// Gauss pieces on one segment of a path (each 0.1 of its clearance): past 1e7 the path passes
+// within 1e-6 of the segment's length of a branch point, i.e. two branch points have merged to
+// round-off (a permanent rotation's curve: 9.5e-8 apart at a segment of O(1)) and the curve is
+// singular. Small λ brings them close but not so close (λ = 0.02: 5e-3 apart, 1e5 pieces).
+constexpr double kMaxPieces = 1e7;
 
 struct Curve {
   const BrunCurve& k;
