@@ -6,6 +6,7 @@
 #include "command.hpp"
 #include "continue.hpp"
 #include "newtop/io/json.hpp"
+#include "summary.hpp"
 
 namespace newtop::app {
 namespace {
@@ -96,7 +97,7 @@ int report(const ContinueArgs& a, const Run& r, double p0, double p1, io::Atomic
   io::Json j = family_json(a, r, p0, p1);
   if (a.out) j["csv"] = *a.out;
   if (a.json) {
-    std::cout << j.dump(2) << '\n';
+    print_json(std::cout, j);
     return kExitOk;
   }
   std::cout << "newtop continue " << a.scenario << ": family " << a.family << " in " << a.parameter

@@ -15,6 +15,7 @@
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/orbit/spin_orbit.hpp"
+#include "summary.hpp"
 
 namespace newtop::app {
 namespace {
@@ -146,7 +147,7 @@ int run_guarded(const LibrationArgs& a) {
              {"chaotic_starts", chaotic}};
   if (a.out) j["csv"] = *a.out;
   if (a.json) {
-    std::cout << j.dump(2) << '\n';
+    print_json(std::cout, j);
     return kExitOk;
   }
   std::cout << "newtop libration " << sc.source << "\n  e = " << format_number(e)

@@ -14,6 +14,7 @@
 #include "newtop/orbit/orbit_equilibria.hpp"
 #include "orbit_commands.hpp"
 #include "orbit_summary.hpp"
+#include "summary.hpp"
 
 namespace newtop::app {
 namespace {
@@ -69,7 +70,7 @@ int orbit_equilibria(const std::string& path, bool json) {
              {"lyapunov", set.lyapunov}, {"gyroscopic", set.gyroscopic},
              {"unstable", set.unstable}, {"model", orbit_model_json(sc)}};
   if (json) {
-    std::cout << j.dump(2) << '\n';
+    print_json(std::cout, j);
     return 0;
   }
   std::cout << "newtop equilibria " << sc.source << "\n";
@@ -122,7 +123,7 @@ int orbit_stability(const std::string& path, bool json, std::optional<int> equil
   j["residual"] = res;
   j["model"] = orbit_model_json(sc);
   if (json) {
-    std::cout << j.dump(2) << '\n';
+    print_json(std::cout, j);
     return 0;
   }
   std::cout << "newtop stability " << sc.source << "\n";
@@ -183,7 +184,7 @@ int stability_diagram(const std::string& name, const std::optional<std::string>&
         {"counts", {{"lagrange", count[0]}, {"debra_delp", count[1]}, {"unstable", count[2]}}},
         {"disagreements_with_closed_form", disagree}};
     if (out) j["csv"] = *out;
-    std::cout << j.dump(2) << '\n';
+    print_json(std::cout, j);
     return 0;
   }
   std::cout << "newtop stability --diagram debra-delp: " << points.size() << " points\n"

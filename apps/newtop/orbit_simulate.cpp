@@ -13,6 +13,7 @@
 #include "newtop/orbit/orbit_integrate.hpp"
 #include "orbit_commands.hpp"
 #include "orbit_summary.hpp"
+#include "summary.hpp"
 #include "times_option.hpp"
 
 namespace newtop::app {
@@ -193,7 +194,7 @@ int orbit_simulate(const std::string& path, const OrbitSimulateArgs& a) {
                            tr.max_drift, tr.max_geometric,
                            out_path};
   if (a.json) {
-    std::cout << orbit_simulation_json(rep).dump(2) << '\n';
+    print_json(std::cout, orbit_simulation_json(rep));
   } else {
     print_orbit_simulation(std::cout, rep);
   }
@@ -211,7 +212,7 @@ int orbit_integrals(const std::string& path, bool json) {
                        : io::Json::array({"gamma_gamma", "normal_normal", "gamma_normal"});
   j["model"] = orbit_model_json(sc);
   if (json) {
-    std::cout << j.dump(2) << '\n';
+    print_json(std::cout, j);
     return 0;
   }
   std::cout << "newtop integrals " << sc.source << "\n";
