@@ -6,6 +6,7 @@
 #include "cli.hpp"
 #include "newtop/orbit/debra_delp.hpp"
 #include "newtop/orbit/lvlh.hpp"
+#include "summary.hpp"
 
 namespace newtop::app {
 namespace {
@@ -74,6 +75,7 @@ io::Json orbit_model_json(const io::OrbitScenario& sc) {
     }
   }
   j["units"] = sc.mu ? orbit_units(*sc.mu) : "those of the scenario (rate in rad per time unit)";
+  set_units(j["units"].get<std::string>());  // the report's own units line and field say the same
   return j;
 }
 
@@ -101,7 +103,8 @@ void print_orbit_model(std::ostream& os, const io::OrbitScenario& sc) {
       os << "\n";
     }
   }
-  os << "units     " << (sc.mu ? orbit_units(*sc.mu) : "those of the scenario") << "\n";
+  // The summary's last line (run_newtop) names them.
+  set_units(sc.mu ? orbit_units(*sc.mu) : "those of the scenario (rate in rad per time unit)");
 }
 
 io::Json orbit_values_json(const io::OrbitScenario& sc, const OrbitValues& v) {
