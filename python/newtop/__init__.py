@@ -17,7 +17,7 @@ __version__ = "0.1.0"
 
 try:  # the compiled extension, when the build made one (PYTHONPATH=build/python)
     from ._newtop import (Body, InputError, MassModel, Model, QuadraticField, Scenario, State,  # noqa: F401
-                          conserved_integrals, equilibrium_family, integrate, is_orbit_scenario,
+                          brun_state_at, conserved_integrals, equilibrium_family, integrate, is_orbit_scenario,
                           load_scenario, parse_scenario, resonance_family, rotation_family)
     from ._newtop import integrals as integrals_at  # noqa: F401  (the library's, at a state)
     from ._newtop import (AnalyticResult, ChaosResult, Equilibria, Section,  # noqa: F401

@@ -14,6 +14,7 @@
 
 #include "bindings.hpp"
 #include "newtop/analysis/analytic_comparison.hpp"
+#include "newtop/analysis/brun_prym_inversion.hpp"
 #include "newtop/analysis/equilibria.hpp"
 #include "newtop/analysis/stability_report.hpp"
 #include "newtop/model/state_checks.hpp"
@@ -470,6 +471,20 @@ void bind_analytic(py::module_& m) {
       },
       py::arg("model"), py::arg("state"), py::arg("times"), py::kw_only(),
       py::arg("max_steps") = py::none());
+  m.def(
+      "brun_state_at",
+      [](const Model& model, const State& state, double t) {
+        if (model.kind() != FieldKind::quadratic) {
+          throw InputError(std::string("model: Brun's case needs the quadratic field, found the ") +
+                           to_string(model.kind()) + " field");
+        }
+        validate(state);
+        const py::gil_scoped_release unlocked;
+        return brun_state_at(model.quadratic(), state, t);
+      },
+      "The state at time t on Brun's level f = m.gamma != 0 of `state` (the Abel-Prym inversion, "
+      "docs/integrable.md): no integration along the way.",
+      py::arg("model"), py::arg("state"), py::arg("t"));
 }
 
 }  // namespace

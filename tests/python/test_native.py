@@ -175,3 +175,20 @@ def test_rhs_is_an_array():
     assert np.array_equal(d, model.rhs(np.concatenate([x0.m, x0.gamma])))
     # dgamma/dt = gamma x omega
     assert np.allclose(d[3:], np.cross(x0.gamma, x0.omega(model.body)), rtol=0, atol=1e-15)
+
+
+# Brun's inversion on a level f != 0 (docs/integrable.md) against rkf78 at tol 1e-14: the same bar
+# as tests/integrable/test_brun_prym_inversion.cpp, 1e-9 in the state (measured 3e-13 at t = 7.5).
+BRUN_AGREEMENT = 1e-9
+
+
+def test_brun_state_at_agrees_with_integration():
+    sc = newtop.load_scenario(os.path.join(os.path.dirname(__file__), "..", "..", "examples",
+                                          "analytic_brun_f.toml"))
+    for t in (2.0, 7.5):
+        x = newtop.brun_state_at(sc.model, sc.initial, t)
+        r = newtop.integrate(sc.model, sc.initial, t, method="rkf78", tol=1e-14)
+        assert np.abs(np.asarray(x.gamma) - r["gamma"][-1]).max() < BRUN_AGREEMENT
+        assert np.abs(np.asarray(x.m) - r["m"][-1]).max() < BRUN_AGREEMENT
+    with pytest.raises(newtop.InputError):
+        newtop.brun_state_at(sc.model, newtop.State([0.5, 1.2, 0.75], [0.0, 0.0, 2.0]), 1.0)
