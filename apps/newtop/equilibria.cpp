@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "command.hpp"
+#include "newtop/io/analysis_json.hpp"
 #include "newtop/io/json.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
@@ -23,44 +24,6 @@ struct EquilibriaArgs {
   std::string scenario;
   bool json = false;
 };
-
-io::Json equilibria_json(const EquilibriumSet& set) {
-  io::Json list = io::Json::array();
-  int index = 0;
-  for (const auto& e : set.equilibria) {
-    io::Json j;
-    j["index"] = ++index;  // 1-based, the K of newtop stability --equilibrium K
-    j["gamma"] = io::to_json(e.gamma);
-    j["kappa"] = e.kappa;
-    j["potential"] = e.potential;
-    j["type"] = to_string(e.type);
-    j["hessian_eigenvalues"] = {e.hessian[0], e.hessian[1]};
-    if (!std::isnan(e.staude_residual)) {  // the quadratic field's Staude cone
-      j["staude_generator"] = io::to_json(e.gamma);
-      j["staude_residual"] = e.staude_residual;
-    }
-    list.push_back(j);
-  }
-  io::Json circles = io::Json::array();
-  for (const auto& c : set.circles) {
-    circles.push_back({{"axis", std::string(1, "xyz"[c.axis])},
-                       {"gamma_axis", c.gamma_axis},
-                       {"kappa", c.kappa},
-                       {"potential", c.potential}});
-  }
-  io::Json j;
-  j["equilibria"] = list;
-  j["count"] = set.equilibria.size();
-  j["every_orientation"] = set.every_orientation;
-  j["circles"] = circles;
-  j["minima"] = set.minima;
-  j["saddles"] = set.saddles;
-  j["maxima"] = set.maxima;
-  j["degenerate"] = set.degenerate;
-  j["count_rule"] = {{"minima_minus_saddles_plus_maxima", set.euler_characteristic()},
-                     {"holds", set.count_rule_holds()}};
-  return j;
-}
 
 void print_equilibria(std::ostream& os, const EquilibriumSet& set, FieldKind kind) {
   if (set.every_orientation) {
@@ -102,7 +65,7 @@ int run(const EquilibriaArgs& a) {
   const io::Scenario sc = io::load_scenario(a.scenario);
   const EquilibriumSet set = find_equilibria(sc.model);
   if (a.json) {
-    io::Json j = equilibria_json(set);
+    io::Json j = io::to_json(set);
     j["model"] = model_json(sc.model);
     j["field"] = field_json(sc.model);
     print_json(std::cout, j);
