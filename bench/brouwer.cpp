@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "newtop/analysis/field_scan.hpp"
 #include "wp_support.hpp"
 
 namespace {
@@ -100,16 +101,6 @@ class Shadow {
   PhaseT<LD> z_;
 };
 
-double exponent(const std::vector<double>& n, const std::vector<double>& rms) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double k = static_cast<double>(n.size());
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    const double x = std::log(n[i]), y = std::log(rms[i]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  return (k * sxy - sx * sy) / (k * sxx - sx * sx);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -170,9 +161,9 @@ int main(int argc, char** argv) {
       std::fprintf(data, "%lld,%.6e,%.6e,%.6e,%.6e\n", (long long)checks[k], g.back(), a.back(),
                    e.back(), tot);
   }
-  std::printf("\nfitted exponents (error ∝ N^p): gamma.gamma %.3f, m.gamma %.3f", exponent(n, g),
-              exponent(n, a));
-  if (shadow) std::printf(", energy round-off %.3f", exponent(n, e));
+  std::printf("\nfitted exponents (error ∝ N^p): gamma.gamma %.3f, m.gamma %.3f",
+              loglog_slope(n, g), loglog_slope(n, a));
+  if (shadow) std::printf(", energy round-off %.3f", loglog_slope(n, e));
   std::printf("\n");
   if (data) std::fclose(data);
   return 0;
