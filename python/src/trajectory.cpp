@@ -85,6 +85,17 @@ py::dict columns(Rows&& rows) {
   return d;
 }
 
+/// The rows as columns, with the run's outcome and method beside them.
+py::dict run_dict(Rows rows, const Outcome& out, const MethodSettings& method) {
+  py::dict d = columns(std::move(rows));
+  d["outcome"] = std::string(to_string(out.status));
+  d["steps"] = out.steps;
+  d["rejected"] = out.rejected;
+  d["method"] = method.name;
+  d["step"] = method.step;
+  return d;
+}
+
 py::dict run(const Model& model, const State& x0, const std::optional<Quaternion>& q0, double t0,
              double t1, const MethodSettings& method, IntegrateOptions options) {
   Rows rows(model, q0.has_value());
@@ -99,13 +110,7 @@ py::dict run(const Model& model, const State& x0, const std::optional<Quaternion
                        [&](double t, const State& s) { rows.add(t, s); });
     }
   }
-  py::dict d = columns(std::move(rows));
-  d["outcome"] = std::string(to_string(out.status));
-  d["steps"] = out.steps;
-  d["rejected"] = out.rejected;
-  d["method"] = method.name;
-  d["step"] = method.step;
-  return d;
+  return run_dict(std::move(rows), out, method);
 }
 
 /// A quaternion [w, x, y, z] given to integrate(): finite and of unit norm within
@@ -148,13 +153,7 @@ py::dict run_sampled(const Model& model, const State& x0, double t0, double t1,
     out = run_method_sampled(method, model, x0, t0, t1, OutputTimes::list(t_eval, t0, t1), options,
                              [&](std::int64_t, double t, const State& s) { rows.add(t, s); });
   }
-  py::dict d = columns(std::move(rows));
-  d["outcome"] = std::string(to_string(out.status));
-  d["steps"] = out.steps;
-  d["rejected"] = out.rejected;
-  d["method"] = method.name;
-  d["step"] = method.step;
-  return d;
+  return run_dict(std::move(rows), out, method);
 }
 
 }  // namespace
