@@ -1,0 +1,305 @@
+// The Taylor ensemble (newtop/integrate/taylor_ensemble.hpp): the lanes' series from the kernels
+// (taylor_ensemble_kernel.hpp), and for each lane the adaptive driver's loop (driver.hpp,
+// run_adaptive) with TaylorStepper's try_step, decision for decision: the step from the lane's
+// coefficients by the scalar code (taylor_lanes::step_from_norms), the last step shortened to land
+// on t1, the step limit, the underflow, a series or a trial that is not finite rejected and
+// retried shorter. A lane whose run ends takes the next trajectory. Compiled with
+// -ffp-contract=off (CMakeLists.txt).
+
+#include "newtop/integrate/taylor_ensemble.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "newtop/integrate/taylor.hpp"
+#include "taylor_ensemble_kernel.hpp"
+#include "taylor_lanes.hpp"
+
+namespace newtop {
+namespace {
+
+using detail::TaylorLaneKernel;
+using detail::taylor_lanes::Lanes;
+
+static_assert(detail::taylor_ensemble_simd::K == detail::taylor_lanes::K &&
+              detail::taylor_ensemble_simd::kInverse == detail::taylor_lanes::kInverse);
+
+TaylorLaneKernel kernel_of(SimdPath path) {
+  switch (path) {
+#if defined(__x86_64__) && defined(__GNUC__)
+    case SimdPath::avx2:
+      return detail::taylor_lane_kernel_avx2();
+    case SimdPath::avx512:
+      return detail::taylor_lane_kernel_avx512();
+#endif
+    default:
+      return detail::taylor_lane_kernel_portable();
+  }
+}
+
+/// The driver's variables (run_adaptive) of the trajectory in a lane. `next`: how the lane's
+/// dt follows from the series about to be formed at its state: the first trial step
+/// (initial_step), the step after an accepted one (try_step's last line), or dt unchanged after a
+/// rejected trial.
+struct LaneRun {
+  enum class Next { initial, after_step, retry };
+  std::size_t point = 0;
+  bool active = false, stepping = false, last = false;
+  Next next = Next::initial;
+  double t = 0, dt = 0, h = 0, dt_tried = 0;
+  std::int64_t sample = 0;  // the next output time
+  Outcome out;
+};
+
+/// One run of a batch through one block of lanes.
+class BatchRun {
+ public:
+  BatchRun(const TaylorEnsemble& e, std::span<const QuadraticModel> models,
+           std::span<const State> states, double t0, double t1, const IntegrateOptions& opt,
+           const TaylorEnsembleObserver& obs, std::vector<double>& workspace)
+      : e_(e),
+        kernel_(kernel_of(e.path())),
+        L_(static_cast<std::size_t>(kernel_.lanes)),
+        models_(models),
+        states_(states),
+        t0_(t0),
+        t1_(t1),
+        span_(t1 - t0),
+        dir_(t1 - t0 > 0 ? 1.0 : -1.0),
+        opt_(opt),
+        obs_(obs),
+        lanes_(L_) {
+    const std::size_t coefficients = 6 * L_ * (detail::TaylorSeries::kMaxOrder + 1);
+    workspace.assign((detail::kTaylorLaneConstants + 6 + 6 + 1) * L_ + coefficients, 0.0);
+    consts_ = workspace.data();
+    x_ = consts_ + detail::kTaylorLaneConstants * L_;
+    trial_ = x_ + 6 * L_;
+    h_ = trial_ + 6 * L_;
+    series_ = h_ + L_;
+    outcomes_.resize(states.size());
+  }
+
+  std::vector<Outcome> run() {
+    for (std::size_t l = 0; l < L_; ++l) refill(l);
+    for (std::size_t l = 0; l < L_; ++l) {
+      if (!lanes_[l].active) copy_lane(0, l);  // finite numbers in the idle lanes
+    }
+    while (std::any_of(lanes_.begin(), lanes_.end(), [](const LaneRun& r) { return r.active; })) {
+      kernel_.expand(consts_, x_, e_.order(), series_);
+      bool any = false;
+      for (std::size_t l = 0; l < L_; ++l) {
+        h_[l] = 0.0;
+        lanes_[l].stepping = false;
+        if (lanes_[l].active) any = decide(l) || any;
+      }
+      if (!any) continue;
+      kernel_.sum(series_, e_.order(), h_, trial_);
+      for (std::size_t l = 0; l < L_; ++l) {
+        if (lanes_[l].stepping) accept(l);
+      }
+    }
+    return std::move(outcomes_);
+  }
+
+ private:
+  double coefficient(int n, int c, std::size_t l) const {
+    return series_[(6 * static_cast<std::size_t>(n) + static_cast<std::size_t>(c)) * L_ + l];
+  }
+
+  // taylor_step of the lane's series.
+  double lane_step(std::size_t l) const {
+    auto norm = [&](int n) {
+      const Lanes m{coefficient(n, 0, l), coefficient(n, 1, l), coefficient(n, 2, l), 0.0};
+      const Lanes g{coefficient(n, 3, l), coefficient(n, 4, l), coefficient(n, 5, l), 0.0};
+      return detail::taylor_lanes::pair_norm(m, g);
+    };
+    return detail::taylor_lanes::step_from_norms(e_.order(), norm, e_.abs_tol(), e_.rel_tol());
+  }
+
+  // The lane's series summed at h (taylor_state, TaylorStepper::dense_state).
+  State lane_state(std::size_t l, double h) const {
+    std::array<Lanes, detail::TaylorSeries::kMaxOrder + 1> m, g;
+    for (int n = 0; n <= e_.order(); ++n) {
+      const auto i = static_cast<std::size_t>(n);
+      m[i] = {coefficient(n, 0, l), coefficient(n, 1, l), coefficient(n, 2, l), 0.0};
+      g[i] = {coefficient(n, 3, l), coefficient(n, 4, l), coefficient(n, 5, l), 0.0};
+    }
+    return detail::taylor_lanes::sum_series(m.data(), g.data(), e_.order(), h);
+  }
+
+  State lane_of(const double* a, std::size_t l) const {
+    return {Vec3(a[l], a[L_ + l], a[2 * L_ + l]), Vec3(a[3 * L_ + l], a[4 * L_ + l], a[5 * L_ + l])};
+  }
+
+  void copy_lane(std::size_t from, std::size_t to) {
+    for (std::size_t c = 0; c < detail::kTaylorLaneConstants; ++c) {
+      consts_[c * L_ + to] = consts_[c * L_ + from];
+    }
+    for (std::size_t c = 0; c < 6; ++c) x_[c * L_ + to] = x_[c * L_ + from];
+  }
+
+  // The sampling observer and the step observer of the driver, after an accepted step from t_old
+  // (or at t0, with t_old = t).
+  void notify(std::size_t l, double t_old) {
+    LaneRun& r = lanes_[l];
+    const State& x = r.out.state;
+    if (obs_.times != nullptr && obs_.sample) {
+      const OutputTimes& times = *obs_.times;
+      for (; r.sample < times.size() && dir_ * (times[r.sample] - r.t) <= 0; ++r.sample) {
+        const double tk = times[r.sample];
+        obs_.sample(r.point, r.sample, tk, tk == r.t ? x : lane_state(l, tk - t_old));
+      }
+    }
+    if (obs_.step) obs_.step(r.point, r.t, x);
+  }
+
+  // Puts the next trajectory waiting into lane l (or leaves it idle).
+  void refill(std::size_t l) {
+    LaneRun& r = lanes_[l];
+    r.active = false;
+    while (next_ < states_.size()) {
+      const std::size_t p = next_++;
+      r = LaneRun{};
+      r.point = p;
+      r.t = t0_;
+      r.out.t = t0_;
+      r.out.state = states_[p];
+      notify(l, t0_);
+      if (span_ == 0.0) {
+        outcomes_[p] = r.out;
+        continue;
+      }
+      const detail::TaylorModel m(models_.size() == 1 ? models_[0] : models_[p]);
+      const std::array<const Lanes*, 5> rows{&m.inv_i, &m.k, &m.b, &m.d_spin, &m.d_field};
+      for (std::size_t q = 0; q < rows.size(); ++q) {
+        for (std::size_t c = 0; c < 3; ++c) consts_[(3 * q + c) * L_ + l] = (*rows[q])[c];
+      }
+      const State& x = states_[p];
+      for (std::size_t c = 0; c < 3; ++c) {
+        x_[c * L_ + l] = x.m[static_cast<Eigen::Index>(c)];
+        x_[(3 + c) * L_ + l] = x.gamma[static_cast<Eigen::Index>(c)];
+      }
+      r.active = true;
+      return;
+    }
+  }
+
+  void finish(std::size_t l) {
+    outcomes_[lanes_[l].point] = lanes_[l].out;
+    refill(l);
+  }
+
+  // The top of the driver's loop and try_step up to the sum of the series; true when the lane
+  // steps (its h set).
+  bool decide(std::size_t l) {
+    LaneRun& r = lanes_[l];
+    const double step = lane_step(l);
+    if (r.next == LaneRun::Next::initial) {
+      r.dt = dir_ * (opt_.initial_step > 0 ? opt_.initial_step : step);
+    } else if (r.next == LaneRun::Next::after_step) {
+      r.dt = r.h < 0 ? -step : step;
+    }
+    if (r.out.steps + r.out.rejected >= opt_.max_steps) {
+      r.out.status = Status::step_limit;
+      finish(l);
+      return false;
+    }
+    r.last = false;
+    if (dir_ * (r.t + r.dt - t1_) >= 0) {
+      r.dt = t1_ - r.t;
+      r.last = true;
+    }
+    const double scale = std::max(std::abs(r.t), std::abs(span_));
+    if (!(std::abs(r.dt) >= opt_.min_step_factor * scale)) {
+      r.out.status = Status::step_size_underflow;
+      finish(l);
+      return false;
+    }
+    r.dt_tried = r.dt;
+    const double h_max = step;
+    if (!(h_max > 0.0)) {  // NaN: the series is not finite (try_step's rejection)
+      r.dt *= kNonFiniteShrink;
+      if (!std::isfinite(r.dt)) r.dt = kNonFiniteShrink * r.dt_tried;
+      ++r.out.rejected;
+      r.next = LaneRun::Next::retry;
+      return false;
+    }
+    r.h = std::abs(r.dt) <= h_max ? r.dt : (r.dt < 0 ? -h_max : h_max);
+    h_[l] = r.h;
+    r.stepping = true;
+    return true;
+  }
+
+  // The rest of try_step and of the driver's loop with the lane's trial state.
+  void accept(std::size_t l) {
+    LaneRun& r = lanes_[l];
+    const State trial = lane_of(trial_, l);
+    const double t_trial = r.t + r.h;
+    if (!is_finite(trial)) {
+      r.dt = kNonFiniteShrink * r.dt_tried;
+      ++r.out.rejected;
+      r.next = LaneRun::Next::retry;
+      return;
+    }
+    const double t_old = r.t;
+    r.t = r.last ? t1_ : t_trial;
+    ++r.out.steps;
+    r.out.t = r.t;
+    r.out.state = trial;
+    r.out.last_step = r.dt_tried;
+    for (std::size_t c = 0; c < 6; ++c) x_[c * L_ + l] = trial_[c * L_ + l];
+    notify(l, t_old);
+    r.next = LaneRun::Next::after_step;
+    if (!(dir_ * (t1_ - r.t) > 0)) finish(l);
+  }
+
+  const TaylorEnsemble& e_;
+  TaylorLaneKernel kernel_;
+  std::size_t L_;
+  std::span<const QuadraticModel> models_;
+  std::span<const State> states_;
+  double t0_, t1_, span_, dir_;
+  const IntegrateOptions& opt_;
+  const TaylorEnsembleObserver& obs_;
+  std::vector<LaneRun> lanes_;
+  std::vector<Outcome> outcomes_;
+  std::size_t next_ = 0;
+  double *consts_ = nullptr, *x_ = nullptr, *trial_ = nullptr, *h_ = nullptr, *series_ = nullptr;
+};
+
+}  // namespace
+
+TaylorEnsemble::TaylorEnsemble(double abs_tol, double rel_tol, SimdPath path)
+    : abs_tol_(abs_tol),
+      rel_tol_(rel_tol),
+      order_(TaylorStepper(abs_tol, rel_tol).order()),  // its checks and order rule
+      path_(path) {
+  if (!simd_path_available(path)) {
+    throw InputError("simd: expected a path this build and CPU support (best: " +
+                     std::string(simd_path_name(best_simd_path())) + "), found " +
+                     std::string(simd_path_name(path)));
+  }
+}
+
+std::size_t TaylorEnsemble::lanes() const {
+  return static_cast<std::size_t>(kernel_of(path_).lanes);
+}
+
+std::vector<Outcome> TaylorEnsemble::integrate(std::span<const QuadraticModel> models,
+                                               std::span<const State> states, double t0,
+                                               double t1, const IntegrateOptions& options,
+                                               const TaylorEnsembleObserver& observer) {
+  if (models.size() != 1 && models.size() != states.size()) {
+    throw InputError("models: expected 1 or one per state (" + std::to_string(states.size()) +
+                     "), found " + std::to_string(models.size()));
+  }
+  check_time_span(t0, t1);
+  check_options(options);
+  for (const State& x : states) check_state(x);
+  if (states.empty()) return {};
+  return BatchRun(*this, models, states, t0, t1, options, observer, workspace_).run();
+}
+
+}  // namespace newtop

@@ -1,0 +1,25 @@
+// The Taylor ensemble's kernel for AVX-512: eight doubles per register. Compiled with -mavx512f -ffp-contract=off
+// (CMakeLists.txt); run only where the CPU has AVX-512F (taylor_ensemble.cpp).
+
+#include "taylor_ensemble_kernel.hpp"
+
+#if defined(__x86_64__) && defined(__GNUC__)
+namespace newtop::detail {
+namespace {
+
+using V = double __attribute__((vector_size(64)));
+constexpr int kLanes = 8;
+
+void expand(const double* consts, const double* x, int order, double* series) {
+  taylor_ensemble_simd::expand<V, kLanes>(consts, x, order, series);
+}
+void sum(const double* series, int order, const double* h, double* out) {
+  taylor_ensemble_simd::sum<V, kLanes>(series, order, h, out);
+}
+
+}  // namespace
+
+TaylorLaneKernel taylor_lane_kernel_avx512() { return {kLanes, expand, sum}; }
+
+}  // namespace newtop::detail
+#endif

@@ -1,0 +1,166 @@
+#pragma once
+// The kernels of the Taylor ensemble (taylor_ensemble.hpp; private to src/integrate): Taylor's
+// recurrences and the sum of the series, one trajectory per lane of a vector of L doubles, in
+// structure-of-arrays form. Each lane does the operations of taylor.cpp's expand_lanes and of
+// taylor_lanes::sum_series for one component after another, in their order: where taylor.cpp holds
+// the components (x, y, z) in lanes and rotates them, (y, z, x) and (z, x, y), these kernels hold
+// component c + 1 and c + 2 (mod 3) in registers of their own. Compiled with -ffp-contract=off
+// (CMakeLists.txt), so that no a·b + c is fused: the same bits as the scalar recurrences.
+//
+// Layouts, for L lanes: the constants (kConstants rows: 1/I, k, b, d_spin, d_field, three
+// components each) at consts[(3 q + c) L + l]; a state (m, γ) at x[c L + l], c = 0..5; the
+// coefficient n of the series at series[(6 n + c) L + l].
+
+#include <array>
+#include <cstddef>
+#include <cstring>
+
+namespace newtop::detail {
+
+inline constexpr int kTaylorLaneConstants = 15;  // inv_i, k, b, d_spin, d_field
+inline constexpr int kTaylorLaneWidth = 8;       // the widest lane count (AVX-512)
+
+/// One kernel's entry points, for an instruction set.
+struct TaylorLaneKernel {
+  int lanes;
+  void (*expand)(const double* consts, const double* x, int order, double* series);
+  void (*sum)(const double* series, int order, const double* h, double* out);
+};
+
+TaylorLaneKernel taylor_lane_kernel_portable();
+#if defined(__x86_64__) && defined(__GNUC__)
+TaylorLaneKernel taylor_lane_kernel_avx2();
+TaylorLaneKernel taylor_lane_kernel_avx512();
+#endif
+
+namespace taylor_ensemble_simd {
+
+// The coefficients of a series, 0..kMaxOrder (TaylorSeries::kMaxOrder; taylor_ensemble.cpp checks
+// it), and 1/(n + 1) as taylor_lanes::kInverse holds it: this header stays free of Eigen, whose
+// headers refuse -mavx512f without -mfma.
+inline constexpr int K = 41;
+inline constexpr std::array<double, K> kInverse = [] {
+  std::array<double, K> a{};
+  for (int n = 0; n < K; ++n) a[static_cast<std::size_t>(n)] = 1.0 / static_cast<double>(n + 1);
+  return a;
+}();
+
+template <class V>
+[[gnu::always_inline]] inline V load(const double* p) {
+  V v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+template <class V>
+[[gnu::always_inline]] inline void store(double* p, const V& v) {
+  std::memcpy(p, &v, sizeof v);
+}
+
+// The sums of one order (taylor.cpp: P, Rs, S, T), one vector per component.
+template <class V>
+struct Sums {
+  V p[3]{}, rs[3]{}, s[3]{}, t[3]{};
+};
+
+// taylor.cpp's pair(a, c): the terms j and n − j of the Cauchy sums.
+template <class V>
+[[gnu::always_inline]] inline void pair(const V (&wa)[3], const V (&ga)[3], const V (&wc)[3],
+                                        const V (&gc)[3], Sums<V>& z) {
+  for (int c = 0; c < 3; ++c) {
+    const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+    z.p[c] += wa[c1] * wc[c2] + wc[c1] * wa[c2];
+    z.rs[c] += ga[c1] * gc[c2] + gc[c1] * ga[c2];
+    z.s[c] += ga[c1] * wc[c2] + gc[c1] * wa[c2];
+    z.t[c] += ga[c2] * wc[c1] + gc[c2] * wa[c1];
+  }
+}
+
+// taylor.cpp's single(a): the term j = n − j.
+template <class V>
+[[gnu::always_inline]] inline void single(const V (&w)[3], const V (&g)[3], Sums<V>& z) {
+  for (int c = 0; c < 3; ++c) {
+    const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+    z.p[c] += w[c1] * w[c2];
+    z.rs[c] += g[c1] * g[c2];
+    z.s[c] += g[c1] * w[c2];
+    z.t[c] += g[c2] * w[c1];
+  }
+}
+
+// The coefficients 0..order of the series through x (taylor.cpp, expand_lanes without attitude).
+template <class V, int L>
+void expand(const double* consts, const double* x, int order, double* series) {
+  V inv_i[3], k[3], b[3], d_spin[3], d_field[3];
+  for (int c = 0; c < 3; ++c) {
+    inv_i[c] = load<V>(consts + (0 + c) * L);
+    k[c] = load<V>(consts + (3 + c) * L);
+    b[c] = load<V>(consts + (6 + c) * L);
+    d_spin[c] = load<V>(consts + (9 + c) * L);
+    d_field[c] = load<V>(consts + (12 + c) * L);
+  }
+  V w[K][3], g[K][3];  // ω^[n], γ^[n]
+  for (int c = 0; c < 3; ++c) {
+    const V m = load<V>(x + c * L);
+    g[0][c] = load<V>(x + (3 + c) * L);
+    store(series + c * L, m);
+    store(series + (3 + c) * L, g[0][c]);
+    w[0][c] = (m - k[c]) * inv_i[c];
+  }
+  for (int n = 0; n < order; ++n) {
+    Sums<V> a, bsum;  // the two interleaved halves (P and Pb in taylor.cpp)
+    const int last_pair = (n - 1) / 2;
+    int j = 1;
+    for (; j + 1 <= last_pair; j += 2) {
+      pair(w[j], g[j], w[n - j], g[n - j], a);
+      pair(w[j + 1], g[j + 1], w[n - j - 1], g[n - j - 1], bsum);
+    }
+    if (j == last_pair) pair(w[j], g[j], w[n - j], g[n - j], a);
+    if (n % 2 == 0 && n > 0) single(w[n / 2], g[n / 2], bsum);
+    for (int c = 0; c < 3; ++c) {
+      a.p[c] += bsum.p[c];
+      a.rs[c] += bsum.rs[c];
+      a.s[c] += bsum.s[c];
+      a.t[c] += bsum.t[c];
+    }
+    if (n == 0) {
+      single(w[0], g[0], a);
+    } else {
+      pair(w[0], g[0], w[n], g[n], a);
+    }
+    const double inv = kInverse[static_cast<std::size_t>(n)];
+    double* next = series + 6 * (n + 1) * L;
+    for (int c = 0; c < 3; ++c) {
+      const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+      const V linear = (k[c1] * w[n][c2] - k[c2] * w[n][c1]) + (g[n][c1] * b[c2] - g[n][c2] * b[c1]);
+      store(next + c * L, (d_spin[c] * a.p[c] + d_field[c] * a.rs[c] + linear) * inv);
+      const V to_w = inv_i[c] * inv;
+      w[n + 1][c] = (d_spin[c] * to_w) * a.p[c] + (d_field[c] * to_w) * a.rs[c] + linear * to_w;
+    }
+    for (int c = 0; c < 3; ++c) {
+      g[n + 1][c] = (a.s[c] - a.t[c]) * inv;
+      store(next + (3 + c) * L, g[n + 1][c]);
+    }
+  }
+}
+
+// The series summed at h, a step per lane (taylor_lanes::sum_series: Horner in h² over the even
+// and the odd coefficients).
+template <class V, int L>
+void sum(const double* series, int order, const double* h_lanes, double* out) {
+  const V h = load<V>(h_lanes);
+  const V h2 = h * h;
+  auto horner = [&](int top, V (&x)[6]) {
+    for (int c = 0; c < 6; ++c) x[c] = load<V>(series + (6 * top + c) * L);
+    for (int n = top - 2; n >= 0; n -= 2) {
+      for (int c = 0; c < 6; ++c) x[c] = x[c] * h2 + load<V>(series + (6 * n + c) * L);
+    }
+  };
+  const int odd = order % 2;  // the highest order is odd
+  V even[6], other[6];
+  horner(order - odd, even);
+  horner(order - 1 + odd, other);
+  for (int c = 0; c < 6; ++c) store(out + c * L, even[c] + other[c] * h);
+}
+
+}  // namespace taylor_ensemble_simd
+}  // namespace newtop::detail

@@ -1,0 +1,23 @@
+// The Taylor ensemble's kernel for any CPU: pairs of doubles (SSE2 on x86-64, plain code
+// elsewhere). Compiled with -ffp-contract=off (CMakeLists.txt).
+
+#include "taylor_ensemble_kernel.hpp"
+
+namespace newtop::detail {
+namespace {
+
+using V = double __attribute__((vector_size(16)));
+constexpr int kLanes = 2;
+
+void expand(const double* consts, const double* x, int order, double* series) {
+  taylor_ensemble_simd::expand<V, kLanes>(consts, x, order, series);
+}
+void sum(const double* series, int order, const double* h, double* out) {
+  taylor_ensemble_simd::sum<V, kLanes>(series, order, h, out);
+}
+
+}  // namespace
+
+TaylorLaneKernel taylor_lane_kernel_portable() { return {kLanes, expand, sum}; }
+
+}  // namespace newtop::detail
