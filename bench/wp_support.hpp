@@ -6,6 +6,7 @@
 #include <array>
 #include <boost/numeric/odeint/integrate/integrate_adaptive.hpp>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <string>
 
@@ -96,6 +97,54 @@ State odeint_run(const Regime& r, double tol, std::int64_t& steps, Obs&& obs) {
   steps = static_cast<std::int64_t>(ode::integrate_adaptive(
       ode::make_controlled(tol, tol, Stepper()), rhs, y, 0.0, r.T, 1e-3, observer));
   return from_ode(y);
+}
+
+// --- regimes -------------------------------------------------------------------------------------
+
+inline Regime generic() {
+  QuadraticModel m{
+      Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3(0.3, 0.2, 0.1), Vec3(0.1, -0.2, 0.05)),
+      QuadraticField::coulomb(1.0, 0.5)};
+  const State x0 = state_from_omega(m.body, Vec3(0.5, 1.1, -0.4), Vec3(0.48, -0.6, 0.64));
+  return {"a",
+          "(a) generic: A, B, C = 1, 1.5, 2.2; r0 = (0.3, 0.2, 0.1); k = (0.1, -0.2, 0.05); "
+          "g = 1, lambda = 0.5; T = 40 (about 3 Lyapunov times)",
+          m,
+          x0,
+          40.0,
+          0.5};
+}
+
+// A spinning satellite (fixed point at the centre of mass: r0 = 0, k = 0) about its largest axis
+// at Ω = 1 with a nutation of 0.1 rad, in a gravity gradient λ = ratio Ω².
+inline Regime fast_spin(double ratio, std::string name) {
+  QuadraticModel m{Body::from_principal(Vec3(1.0, 1.2, 1.5), 1.0, Vec3::Zero()),
+                   QuadraticField::coulomb(0.0, ratio)};
+  const Vec3 w = Vec3(0.08, -0.06, 1.0).normalized();
+  const State x0 = state_from_omega(m.body, w, Vec3(0.3, -0.5, 0.8).normalized());
+  char d[200];
+  std::snprintf(
+      d, sizeof d,
+      "(b) fast spin: A, B, C = 1, 1.2, 1.5; r0 = 0, k = 0; |omega| = 1 about the largest "
+      "axis, nutation 0.1 rad; lambda/Omega^2 = %g; T = 1e4 (unit 1/Omega)",
+      ratio);
+  return {std::move(name), d, m, x0, 1e4, 2.0};
+}
+
+// Libration about the stable equilibrium γ = e_x (least moment) of a gravity gradient λ = 1
+// (time unit 1/√λ), amplitude about 0.2 rad.
+inline Regime libration() {
+  QuadraticModel m{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3::Zero()),
+                   QuadraticField::coulomb(0.0, 1.0)};
+  const State x0 =
+      state_from_omega(m.body, Vec3(0.05, -0.1, 0.12), Vec3(1.0, 0.15, -0.1).normalized());
+  return {"c",
+          "(c) slow libration: A, B, C = 1, 1.5, 2.2; r0 = 0, k = 0; lambda = 1; about "
+          "gamma = e_x, amplitude ~0.2 rad; T = 1e4 (unit 1/sqrt(lambda))",
+          m,
+          x0,
+          1e4,
+          2.0};
 }
 
 }  // namespace wp
