@@ -1,8 +1,8 @@
 #pragma once
-// The Taylor ensemble's work–precision (bench_taylor_ensemble.cpp, heyoka/taylor_ensemble_heyoka.cpp):
-// the CPU time per trajectory of newtop's scalar Taylor run and of its ensemble (N copies of the
-// regime's start, one per lane) at a ladder of tolerances, and the time at a target state error
-// interpolated in log–log between the two tolerances that bracket it.
+// The Taylor ensemble's work–precision (bench_taylor_ensemble.cpp,
+// heyoka/taylor_ensemble_heyoka.cpp): the CPU time per trajectory of newtop's scalar Taylor run and
+// of its ensemble (N copies of the regime's start, one per lane) at a ladder of tolerances, and the
+// time at a target state error interpolated in log–log between the two tolerances that bracket it.
 
 #include <algorithm>
 #include <cmath>

@@ -130,7 +130,8 @@ class BatchRun {
   }
 
   State lane_of(const double* a, std::size_t l) const {
-    return {Vec3(a[l], a[L_ + l], a[2 * L_ + l]), Vec3(a[3 * L_ + l], a[4 * L_ + l], a[5 * L_ + l])};
+    return {Vec3(a[l], a[L_ + l], a[2 * L_ + l]),
+            Vec3(a[3 * L_ + l], a[4 * L_ + l], a[5 * L_ + l])};
   }
 
   void copy_lane(std::size_t from, std::size_t to) {
@@ -288,8 +289,8 @@ std::size_t TaylorEnsemble::lanes() const {
 }
 
 std::vector<Outcome> TaylorEnsemble::integrate(std::span<const QuadraticModel> models,
-                                               std::span<const State> states, double t0,
-                                               double t1, const IntegrateOptions& options,
+                                               std::span<const State> states, double t0, double t1,
+                                               const IntegrateOptions& options,
                                                const TaylorEnsembleObserver& observer) {
   if (models.size() != 1 && models.size() != states.size()) {
     throw InputError("models: expected 1 or one per state (" + std::to_string(states.size()) +

@@ -1,5 +1,5 @@
-// The Taylor ensemble's kernel for AVX2: four doubles per register. Compiled with -mavx2 -ffp-contract=off
-// (CMakeLists.txt); run only where the CPU has AVX2 (taylor_ensemble.cpp).
+// The Taylor ensemble's kernel for AVX2: four doubles per register. Compiled with -mavx2
+// -ffp-contract=off (CMakeLists.txt); run only where the CPU has AVX2 (taylor_ensemble.cpp).
 
 #include "taylor_ensemble_kernel.hpp"
 

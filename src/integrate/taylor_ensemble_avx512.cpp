@@ -1,5 +1,5 @@
-// The Taylor ensemble's kernel for AVX-512: eight doubles per register. Compiled with -mavx512f -ffp-contract=off
-// (CMakeLists.txt); run only where the CPU has AVX-512F (taylor_ensemble.cpp).
+// The Taylor ensemble's kernel for AVX-512: eight doubles per register. Compiled with -mavx512f
+// -ffp-contract=off (CMakeLists.txt); run only where the CPU has AVX-512F (taylor_ensemble.cpp).
 
 #include "taylor_ensemble_kernel.hpp"
 

@@ -131,7 +131,8 @@ void expand(const double* consts, const double* x, int order, double* series) {
     double* next = series + 6 * (n + 1) * L;
     for (int c = 0; c < 3; ++c) {
       const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-      const V linear = (k[c1] * w[n][c2] - k[c2] * w[n][c1]) + (g[n][c1] * b[c2] - g[n][c2] * b[c1]);
+      const V linear =
+          (k[c1] * w[n][c2] - k[c2] * w[n][c1]) + (g[n][c1] * b[c2] - g[n][c2] * b[c1]);
       store(next + c * L, (d_spin[c] * a.p[c] + d_field[c] * a.rs[c] + linear) * inv);
       const V to_w = inv_i[c] * inv;
       w[n + 1][c] = (d_spin[c] * to_w) * a.p[c] + (d_field[c] * to_w) * a.rs[c] + linear * to_w;
@@ -149,7 +150,7 @@ template <class V, int L>
 void sum(const double* series, int order, const double* h_lanes, double* out) {
   const V h = load<V>(h_lanes);
   const V h2 = h * h;
-  auto horner = [&](int top, V (&x)[6]) {
+  auto horner = [&](int top, V(&x)[6]) {
     for (int c = 0; c < 6; ++c) x[c] = load<V>(series + (6 * top + c) * L);
     for (int n = top - 2; n >= 0; n -= 2) {
       for (int c = 0; c < 6; ++c) x[c] = x[c] * h2 + load<V>(series + (6 * n + c) * L);

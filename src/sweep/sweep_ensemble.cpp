@@ -13,6 +13,7 @@
 #include "newtop/integrate/driver.hpp"
 #include "newtop/integrate/ensemble.hpp"
 #include "newtop/integrate/method_settings.hpp"
+#include "newtop/integrate/taylor_ensemble.hpp"
 #include "newtop/model/integrals.hpp"
 #include "newtop/phase/chaos.hpp"
 #include "newtop/phase/ensemble_tangent.hpp"
@@ -54,8 +55,9 @@ bool same_model(const QuadraticModel& a, const QuadraticModel& b) {
 
 bool same_run(const RunKey& a, const RunKey& b) {
   const SplitOrdering &p = a.ordering, &q = b.ordering;
-  return a.method.name == b.method.name && a.method.step == b.method.step && p.axes == q.axes &&
-         p.kick_outside == q.kick_outside && p.by_moment == q.by_moment &&
+  return a.method.name == b.method.name && a.method.step == b.method.step &&
+         a.method.abs_tol == b.method.abs_tol && a.method.rel_tol == b.method.rel_tol &&
+         p.axes == q.axes && p.kick_outside == q.kick_outside && p.by_moment == q.by_moment &&
          p.free_body == q.free_body && a.t0 == b.t0 && a.t1 == b.t1 && a.max_steps == b.max_steps;
 }
 
@@ -77,6 +79,10 @@ struct Group {
 std::optional<RunKey> run_key(const SweepFile& s, const io::Scenario& sc) {
   if (sc.model.kind() != FieldKind::quadratic || !is_finite(sc.initial)) return std::nullopt;
   const MethodSettings method = io::resolve_method(sc, s.integrate);
+  if (method.name == "taylor" && !tangent_sweep(s)) {  // the Taylor ensemble (no tangent lanes)
+    return RunKey{method, SplitOrdering{}, sc.integrate.t0, io::resolve_t_end(sc, s.integrate),
+                  sc.integrate.max_steps.value_or(IntegrateOptions{}.max_steps)};
+  }
   if (method_info(method.name).kind != MethodKind::splitting) return std::nullopt;
   const SplitOrdering ordering =
       method.ordering.value_or(default_ordering(composition_table(method.name)));
@@ -169,6 +175,43 @@ void run_group(const SweepFile& s, const Group& g, std::vector<std::optional<Poi
     out[g.members[j].slot] = n > k.max_steps
                                  ? PointResult{std::string(to_string(Status::step_limit)), {}}
                                  : finished(s, g.members[j], n > 0 ? k.t1 : k.t0, x[j], drift[j]);
+  }
+}
+
+/// A group of Taylor runs through the Taylor ensemble (a model per lane), which reproduces each
+/// point's run of the adaptive driver with TaylorStepper bit for bit, every accepted step observed
+/// for the drift as evaluate_point's observer does (from t0 on).
+void run_taylor_group(const SweepFile& s, const Group& g,
+                      std::vector<std::optional<PointResult>>& out) {
+  const RunKey& k = g.key;
+  validate(k.method);
+  IntegrateOptions options;
+  options.max_steps = k.max_steps;
+  TaylorEnsemble ensemble(k.method.abs_tol, k.method.rel_tol);
+  std::vector<State> x;
+  std::vector<QuadraticModel> models;
+  std::vector<IntegralValues> i0;
+  for (const Member& p : g.members) {
+    x.push_back(p.initial);
+    models.push_back(p.quadratic);
+    i0.push_back(integrals(p.model, p.initial));
+  }
+  std::vector<Drift> drift(g.members.size());
+  TaylorEnsembleObserver obs;
+  if (wants(s, "drift")) {
+    obs.step = [&](std::size_t j, double, const State& y) {
+      const IntegralValues v = integrals(g.members[j].model, y);
+      Drift& d = drift[j];
+      d.energy = std::max(d.energy, std::abs(v.energy - i0[j].energy));
+      d.area = std::max(d.area, std::abs(v.area - i0[j].area));
+      d.geometric = std::max(d.geometric, std::abs(v.geometric - i0[j].geometric));
+    };
+  }
+  const std::vector<Outcome> r = ensemble.integrate(models, x, k.t0, k.t1, options, obs);
+  for (std::size_t j = 0; j < r.size(); ++j) {
+    out[g.members[j].slot] = r[j].status == Status::finished
+                                 ? finished(s, g.members[j], r[j].t, r[j].state, drift[j])
+                                 : PointResult{std::string(to_string(r[j].status)), {}};
   }
 }
 
@@ -269,7 +312,9 @@ std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std
   if (runs) *runs = groups.size();
   for (const Group& g : groups) {
     try {
-      if (tangent_sweep(s)) {
+      if (g.key.method.name == "taylor") {
+        run_taylor_group(s, g, out);
+      } else if (tangent_sweep(s)) {
         run_tangent_group(s, g, out);
       } else {
         run_group(s, g, out);

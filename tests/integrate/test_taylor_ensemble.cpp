@@ -112,7 +112,8 @@ Runs random_runs(std::size_t n, bool model_per_point, double tol, unsigned seed)
 }
 
 void expect_scalar_agreement(const Runs& r, const std::string& what) {
-  if (test::kScalarMayContract) GTEST_SKIP() << "the scalar recurrences may use fused multiply-adds";
+  if (test::kScalarMayContract)
+    GTEST_SKIP() << "the scalar recurrences may use fused multiply-adds";
   const OutputTimes times = OutputTimes::every(0.7, r.t0, r.t1);
   const std::vector<Record> ref = scalar_runs(r, times);
   for (SimdPath path : available_paths()) {

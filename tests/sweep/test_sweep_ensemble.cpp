@@ -149,6 +149,34 @@ TEST(SweepEnsemble, PointsOverModelParametersInOneRun) {
   expect_points_differ(s, 0, 1, 1);  // their final states are not one state
 }
 
+// The same sweep with a tolerance (method taylor) through the Taylor ensemble, a model per lane,
+// with two step limits (two runs): every point the bits of its own scalar Taylor run, both
+// outcomes present.
+TEST(SweepEnsemble, TaylorPointsOverModelParametersAreEvaluatePointsBits) {
+  const fs::path base = write_file(
+      "gyrostat_taylor.toml",
+      "[body]\ninertia = [1.0, 1.5, 2.2]\nmass = 1.0\ncenter_of_mass = [0.3, 0.2, 0.1]\n"
+      "gyrostat = [0.1, -0.2, 0.05]\n[field]\ng = 1.0\nlambda = 0.5\n"
+      "[initial]\nomega = [0.5, 1.1, -0.4]\ngamma = [0.48, -0.6, 0.64]\n"
+      "[integrate]\nt_end = 6.0\nmethod = \"taylor\"\ntol = 1e-11\nmax_steps = 1000000\n");
+  const std::string sweep =
+      "scenario = \"" + base.string() +
+      "\"\nquantities = [\"final_state\", \"drift\"]\n"
+      "[[axes]]\nkey = \"body.inertia[0]\"\nvalues = [0.8, 1.2, 1.7, 2.0]\n"
+      "[[axes]]\nkey = \"field.lambda\"\nstart = -1.0\nstop = 1.0\ncount = 5\n"
+      "[[axes]]\nkey = \"initial.omega[2]\"\nvalues = [-0.4, 2.5]\n"
+      "[[axes]]\nkey = \"integrate.max_steps\"\nvalues = [12, 1000000]\n";
+  const SweepFile s = newtop::sweep::load_sweep(write_file("taylor_params.toml", sweep));
+  expect_point_by_point(s, 2);
+  expect_points_differ(s, 1, 3, 1);  // their final states are not one state
+  std::size_t limited = 0;
+  for (std::size_t i = 0; i < newtop::sweep::point_count(s); i += 2) {
+    limited += newtop::sweep::evaluate_point(s, i).status == "step_limit";
+  }
+  EXPECT_GT(limited, 0u);
+  EXPECT_LT(limited, newtop::sweep::point_count(s) / 2);
+}
+
 // Points whose runs all differ (a sweep over the step) run one by one: a block of lanes for one
 // point would cost more than its scalar run. The results are the same bits either way.
 TEST(SweepEnsemble, PointsAloneInTheirRunRunOneByOne) {

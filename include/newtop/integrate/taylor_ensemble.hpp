@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// The Taylor ensemble: many trajectories of the quadratic field (docs/model.md §3, §4), each on its
-/// own model, integrated by Taylor's method (taylor.hpp) in SIMD lanes, one trajectory per lane
+/// The Taylor ensemble: many trajectories of the quadratic field (docs/model.md §3, §4), each on
+/// its own model, integrated by Taylor's method (taylor.hpp) in SIMD lanes, one trajectory per lane
 /// (AVX-512: 8 doubles, AVX2: 4, portable: 2; the instruction set chosen at run time as for the
 /// splitting ensemble, ensemble.hpp). One order for the batch (taylor_order of the tolerance),
 /// a step per lane from that lane's own coefficients; a lane whose trajectory reaches t1 takes

@@ -5,7 +5,9 @@
 /// splitting method and its step, the times and the step limit, in a quadratic field (each point
 /// with its own model, held per lane), are advanced together, in SIMD lanes; those of a sweep of
 /// megno and lyapunov_max only through the ensemble tangent stepper
-/// (newtop/phase/ensemble_tangent.hpp) with one tangent vector each. Each point's result is
+/// (newtop/phase/ensemble_tangent.hpp) with one tangent vector each; those of final_state and
+/// drift run with a tolerance (method taylor) through the Taylor ensemble
+/// (newtop/integrate/taylor_ensemble.hpp), a model per lane. Each point's result is
 /// bit-identical to evaluate_point's (the ensemble steppers reproduce the scalar steppers bit for
 /// bit and the runs follow the fixed-step drivers), so a sweep's output does not depend on which
 /// points were grouped, nor on the threads or ranks.
@@ -24,7 +26,8 @@ bool ensemble_sweep(const SweepFile& s);
 
 /// The results of the points `indices`, in that order, each bit-identical to
 /// evaluate_point_safely(s, index): the points of the quadratic field with a finite initial state
-/// that share their run's settings (splitting method, step, t0, t_end, max_steps), four or more,
+/// that share their run's settings (splitting method and step, or taylor and its tolerances; t0,
+/// t_end, max_steps), four or more,
 /// are advanced together by the ensemble stepper, each on its own model (one model for all when
 /// they agree, a model per lane otherwise: a sweep over the body's or the field's numbers), or for
 /// megno and lyapunov_max by the ensemble tangent stepper; any other point by
