@@ -20,6 +20,9 @@ void bind_mass_models(pybind11::module_& m);
 /// integrate(): a run into numpy arrays (trajectory.cpp).
 void bind_trajectory(pybind11::module_& m);
 
+/// integrate_ensemble(): many trajectories through the Taylor ensemble (ensemble.cpp).
+void bind_ensemble(pybind11::module_& m);
+
 /// equilibria, stability, chaos, section and analytic on Python objects (analyses.cpp).
 void bind_analyses(pybind11::module_& m);
 

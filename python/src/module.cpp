@@ -13,6 +13,7 @@ PYBIND11_MODULE(_newtop, m) {
   newtop::python::bind_model(m);
   newtop::python::bind_mass_models(m);
   newtop::python::bind_trajectory(m);
+  newtop::python::bind_ensemble(m);
   newtop::python::bind_analyses(m);
   newtop::python::bind_command_line(m);
   newtop::python::bind_continuation(m);

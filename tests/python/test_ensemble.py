@@ -1,0 +1,74 @@
+"""newtop.integrate_ensemble (the Taylor ensemble): every trajectory of a batch of 1, 3, 8 or 17,
+one model for all or one per trajectory, is the bits of newtop.integrate of that point alone with
+method taylor at the same tolerance — the end of the run, and the states at t_eval; bad input
+raises ValueError before any work.
+
+Run by ctest with NEWTOP_PYTHON_MODULE (build/python) set (tests/python/CMakeLists.txt)."""
+
+import os
+import sys
+
+import numpy as np
+import pytest
+
+sys.path.insert(0, os.environ["NEWTOP_PYTHON_MODULE"])
+import newtop  # noqa: E402
+
+TOL = 1e-10
+T_END = 6.0
+
+
+def models_and_states(n, rng):
+    models, states = [], []
+    for _ in range(n):
+        a, b = rng.uniform(1.0, 1.6, 2)
+        body = newtop.Body.from_principal([a, b, 2.0], mass=1.0,
+                                          center_of_mass=list(rng.uniform(-0.3, 0.3, 3)),
+                                          gyrostat=list(rng.uniform(-0.2, 0.2, 3)))
+        model = newtop.Model(body, newtop.QuadraticField.coulomb(rng.uniform(-1, 1), rng.uniform(-1, 1)))
+        gamma = rng.normal(size=3)
+        models.append(model)
+        states.append(newtop.State.from_omega(body, list(rng.uniform(-1.5, 1.5, 3)),
+                                              list(gamma / np.linalg.norm(gamma))))
+    return models, states
+
+
+@pytest.mark.parametrize("n", [1, 3, 8, 17])
+def test_each_trajectory_is_the_scalar_run(n):
+    rng = np.random.default_rng(n)
+    models, states = models_and_states(n, rng)
+    run = newtop.integrate_ensemble(models, states, T_END, tol=TOL)
+    assert run["m"].shape == (n, 3) and run["outcome"] == ["finished"] * n
+    for i in range(n):
+        one = newtop.integrate(models[i], states[i], T_END, tol=TOL, method="taylor")
+        assert run["t"][i] == one["t"][-1]
+        assert np.array_equal(run["m"][i], one["m"][-1])
+        assert np.array_equal(run["omega"][i], one["omega"][-1])
+        assert np.array_equal(run["gamma"][i], one["gamma"][-1])
+        assert run["steps"][i] == one["steps"]
+
+
+def test_t_eval_and_one_model_for_all():
+    rng = np.random.default_rng(5)
+    models, states = models_and_states(9, rng)
+    rows = np.array([np.concatenate([s.m, s.gamma]) for s in states])
+    times = [0.0, 0.3, 2.5, 6.0]
+    run = newtop.integrate_ensemble(models[0], rows, T_END, tol=TOL, t_eval=times)
+    assert np.array_equal(run["t"], times) and run["gamma"].shape == (9, 4, 3)
+    for i, s in enumerate(states):
+        one = newtop.integrate(models[0], s, T_END, tol=TOL, method="taylor", t_eval=times)
+        assert np.array_equal(run["m"][i], one["m"])
+        assert np.array_equal(run["gamma"][i], one["gamma"])
+
+
+def test_bad_input_is_refused():
+    rng = np.random.default_rng(1)
+    models, states = models_and_states(3, rng)
+    with pytest.raises(ValueError, match="models"):
+        newtop.integrate_ensemble(models[:2], states, T_END, tol=TOL)
+    with pytest.raises(ValueError, match="states"):
+        newtop.integrate_ensemble(models[0], np.zeros((3, 5)), T_END, tol=TOL)
+    with pytest.raises(ValueError, match="tol"):
+        newtop.integrate_ensemble(models[0], states, T_END, tol=0.0)
+    with pytest.raises(ValueError):
+        newtop.integrate_ensemble(models[0], states, float("inf"), tol=TOL)
