@@ -48,7 +48,7 @@ struct LaneRun {
   std::size_t point = 0;
   bool active = false, stepping = false, last = false;
   Next next = Next::initial;
-  double t = 0, dt = 0, h = 0, dt_tried = 0;
+  double t = 0, dt = 0, h = 0, h_max = 0, dt_tried = 0;
   std::int64_t sample = 0;  // the next output time
   Outcome out;
 };
@@ -58,7 +58,8 @@ class BatchRun {
  public:
   BatchRun(const TaylorEnsemble& e, std::span<const QuadraticModel> models,
            std::span<const State> states, double t0, double t1, const IntegrateOptions& opt,
-           const TaylorEnsembleObserver& obs, std::vector<double>& workspace)
+           const TaylorEnsembleObserver& obs, std::vector<double>& workspace,
+           std::span<const TangentVector> v0 = {}, const TaylorTangentObserver* tangent = nullptr)
       : e_(e),
         kernel_(kernel_of(e.path())),
         L_(static_cast<std::size_t>(kernel_.lanes)),
@@ -70,14 +71,19 @@ class BatchRun {
         dir_(t1 - t0 > 0 ? 1.0 : -1.0),
         opt_(opt),
         obs_(obs),
+        v0_(v0),
+        tangent_(tangent),
         lanes_(L_) {
     const std::size_t coefficients = 6 * L_ * (detail::TaylorSeries::kMaxOrder + 1);
-    workspace.assign((detail::kTaylorLaneConstants + 6 + 6 + 1) * L_ + coefficients, 0.0);
+    workspace.assign((detail::kTaylorLaneConstants + 6 * 4 + 1) * L_ + 2 * coefficients, 0.0);
     consts_ = workspace.data();
     x_ = consts_ + detail::kTaylorLaneConstants * L_;
     trial_ = x_ + 6 * L_;
     h_ = trial_ + 6 * L_;
-    series_ = h_ + L_;
+    v_ = h_ + L_;
+    v_trial_ = v_ + 6 * L_;
+    series_ = v_trial_ + 6 * L_;
+    tangent_series_ = series_ + coefficients;
     outcomes_.resize(states.size());
   }
 
@@ -88,6 +94,7 @@ class BatchRun {
     }
     while (std::any_of(lanes_.begin(), lanes_.end(), [](const LaneRun& r) { return r.active; })) {
       kernel_.expand(consts_, x_, e_.order(), series_);
+      if (tangent_) kernel_.expand_tangent(consts_, series_, v_, e_.order(), tangent_series_);
       bool any = false;
       for (std::size_t l = 0; l < L_; ++l) {
         h_[l] = 0.0;
@@ -96,6 +103,7 @@ class BatchRun {
       }
       if (!any) continue;
       kernel_.sum(series_, e_.order(), h_, trial_);
+      if (tangent_) kernel_.sum(tangent_series_, e_.order(), h_, v_trial_);
       for (std::size_t l = 0; l < L_; ++l) {
         if (lanes_[l].stepping) accept(l);
       }
@@ -104,16 +112,27 @@ class BatchRun {
   }
 
  private:
-  double coefficient(int n, int c, std::size_t l) const {
-    return series_[(6 * static_cast<std::size_t>(n) + static_cast<std::size_t>(c)) * L_ + l];
+  double coefficient(int n, int c, std::size_t l, const double* series = nullptr) const {
+    return (
+        series ? series
+               : series_)[(6 * static_cast<std::size_t>(n) + static_cast<std::size_t>(c)) * L_ + l];
   }
 
-  // taylor_step of the lane's series.
-  double lane_step(std::size_t l) const {
+  // The max norm of the coefficient n of a series of the lane (pair_norm).
+  double lane_norm(int n, std::size_t l, const double* series) const {
+    const Lanes m{coefficient(n, 0, l, series), coefficient(n, 1, l, series),
+                  coefficient(n, 2, l, series), 0.0};
+    const Lanes g{coefficient(n, 3, l, series), coefficient(n, 4, l, series),
+                  coefficient(n, 5, l, series), 0.0};
+    return detail::taylor_lanes::pair_norm(m, g);
+  }
+
+  // taylor_step of the lane's series; with `with_tangent`, taylor_tangent_step of the state's and
+  // the vector's series together.
+  double lane_step(std::size_t l, bool with_tangent = false) const {
     auto norm = [&](int n) {
-      const Lanes m{coefficient(n, 0, l), coefficient(n, 1, l), coefficient(n, 2, l), 0.0};
-      const Lanes g{coefficient(n, 3, l), coefficient(n, 4, l), coefficient(n, 5, l), 0.0};
-      return detail::taylor_lanes::pair_norm(m, g);
+      const double r = lane_norm(n, l, series_);
+      return with_tangent ? detail::taylor_lanes::nan_max(r, lane_norm(n, l, tangent_series_)) : r;
     };
     return detail::taylor_lanes::step_from_norms(e_.order(), norm, e_.abs_tol(), e_.rel_tol());
   }
@@ -138,7 +157,10 @@ class BatchRun {
     for (std::size_t c = 0; c < detail::kTaylorLaneConstants; ++c) {
       consts_[c * L_ + to] = consts_[c * L_ + from];
     }
-    for (std::size_t c = 0; c < 6; ++c) x_[c * L_ + to] = x_[c * L_ + from];
+    for (std::size_t c = 0; c < 6; ++c) {
+      x_[c * L_ + to] = x_[c * L_ + from];
+      v_[c * L_ + to] = v_[c * L_ + from];
+    }
   }
 
   // The sampling observer and the step observer of the driver, after an accepted step from t_old
@@ -167,7 +189,7 @@ class BatchRun {
       r.t = t0_;
       r.out.t = t0_;
       r.out.state = states_[p];
-      notify(l, t0_);
+      if (!tangent_) notify(l, t0_);
       if (span_ == 0.0) {
         outcomes_[p] = r.out;
         continue;
@@ -181,6 +203,10 @@ class BatchRun {
       for (std::size_t c = 0; c < 3; ++c) {
         x_[c * L_ + l] = x.m[static_cast<Eigen::Index>(c)];
         x_[(3 + c) * L_ + l] = x.gamma[static_cast<Eigen::Index>(c)];
+      }
+      if (tangent_) {
+        const TangentVector& v = v0_.size() == 1 ? v0_[0] : v0_[p];
+        for (std::size_t c = 0; c < 6; ++c) v_[c * L_ + l] = v[static_cast<Eigen::Index>(c)];
       }
       r.active = true;
       return;
@@ -199,7 +225,7 @@ class BatchRun {
     const double step = lane_step(l);
     if (r.next == LaneRun::Next::initial) {
       r.dt = dir_ * (opt_.initial_step > 0 ? opt_.initial_step : step);
-    } else if (r.next == LaneRun::Next::after_step) {
+    } else if (r.next == LaneRun::Next::after_step && !tangent_) {
       r.dt = r.h < 0 ? -step : step;
     }
     if (r.out.steps + r.out.rejected >= opt_.max_steps) {
@@ -219,7 +245,8 @@ class BatchRun {
       return false;
     }
     r.dt_tried = r.dt;
-    const double h_max = step;
+    const double h_max = tangent_ ? lane_step(l, true) : step;
+    r.h_max = h_max;
     if (!(h_max > 0.0)) {  // NaN: the series is not finite (try_step's rejection)
       r.dt *= kNonFiniteShrink;
       if (!std::isfinite(r.dt)) r.dt = kNonFiniteShrink * r.dt_tried;
@@ -238,7 +265,12 @@ class BatchRun {
     LaneRun& r = lanes_[l];
     const State trial = lane_of(trial_, l);
     const double t_trial = r.t + r.h;
-    if (!is_finite(trial)) {
+    TangentVector v = TangentVector::Zero();
+    if (tangent_) {
+      for (std::size_t c = 0; c < 6; ++c) v[static_cast<Eigen::Index>(c)] = v_trial_[c * L_ + l];
+      r.dt = r.h < 0 ? -r.h_max : r.h_max;  // the tangent stepper's: the step at the start
+    }
+    if (!is_finite(trial) || (tangent_ && !v.allFinite())) {
       r.dt = kNonFiniteShrink * r.dt_tried;
       ++r.out.rejected;
       r.next = LaneRun::Next::retry;
@@ -251,7 +283,12 @@ class BatchRun {
     r.out.state = trial;
     r.out.last_step = r.dt_tried;
     for (std::size_t c = 0; c < 6; ++c) x_[c * L_ + l] = trial_[c * L_ + l];
-    notify(l, t_old);
+    if (tangent_) {
+      (*tangent_)(r.point, r.t, trial, v);
+      for (std::size_t c = 0; c < 6; ++c) v_[c * L_ + l] = v[static_cast<Eigen::Index>(c)];
+    } else {
+      notify(l, t_old);
+    }
     r.next = LaneRun::Next::after_step;
     if (!(dir_ * (t1_ - r.t) > 0)) finish(l);
   }
@@ -264,10 +301,13 @@ class BatchRun {
   double t0_, t1_, span_, dir_;
   const IntegrateOptions& opt_;
   const TaylorEnsembleObserver& obs_;
+  std::span<const TangentVector> v0_;
+  const TaylorTangentObserver* tangent_;
   std::vector<LaneRun> lanes_;
   std::vector<Outcome> outcomes_;
   std::size_t next_ = 0;
   double *consts_ = nullptr, *x_ = nullptr, *trial_ = nullptr, *h_ = nullptr, *series_ = nullptr;
+  double *v_ = nullptr, *v_trial_ = nullptr, *tangent_series_ = nullptr;
 };
 
 }  // namespace
@@ -301,6 +341,33 @@ std::vector<Outcome> TaylorEnsemble::integrate(std::span<const QuadraticModel> m
   for (const State& x : states) check_state(x);
   if (states.empty()) return {};
   return BatchRun(*this, models, states, t0, t1, options, observer, workspace_).run();
+}
+
+}  // namespace newtop
+
+namespace newtop {
+
+std::vector<Outcome> TaylorEnsemble::integrate_tangent(std::span<const QuadraticModel> models,
+                                                       std::span<const State> states,
+                                                       std::span<const TangentVector> v0, double t0,
+                                                       double t1, const IntegrateOptions& options,
+                                                       const TaylorTangentObserver& observer) {
+  if (models.size() != 1 && models.size() != states.size()) {
+    throw InputError("models: expected 1 or one per state (" + std::to_string(states.size()) +
+                     "), found " + std::to_string(models.size()));
+  }
+  if (v0.size() != 1 && v0.size() != states.size()) {
+    throw InputError("tangent: expected 1 vector or one per state (" +
+                     std::to_string(states.size()) + "), found " + std::to_string(v0.size()));
+  }
+  check_time_span(t0, t1);
+  check_options(options);
+  for (const State& x : states) check_state(x);
+  if (states.empty()) return {};
+  const TaylorTangentObserver on_step =
+      observer ? observer : [](std::size_t, double, const State&, TangentVector&) {};
+  const TaylorEnsembleObserver none;
+  return BatchRun(*this, models, states, t0, t1, options, none, workspace_, v0, &on_step).run();
 }
 
 }  // namespace newtop

@@ -17,9 +17,14 @@ void sum(const double* series, int order, const double* h, double* out) {
   taylor_ensemble_simd::sum<V, kLanes>(series, order, h, out);
 }
 
+void expand_tangent(const double* consts, const double* series, const double* v, int order,
+                    double* tangent) {
+  taylor_ensemble_simd::expand_tangent<V, kLanes>(consts, series, v, order, tangent);
+}
+
 }  // namespace
 
-TaylorLaneKernel taylor_lane_kernel_avx2() { return {kLanes, expand, sum}; }
+TaylorLaneKernel taylor_lane_kernel_avx2() { return {kLanes, expand, sum, expand_tangent}; }
 
 }  // namespace newtop::detail
 #endif

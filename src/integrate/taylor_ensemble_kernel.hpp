@@ -25,6 +25,8 @@ struct TaylorLaneKernel {
   int lanes;
   void (*expand)(const double* consts, const double* x, int order, double* series);
   void (*sum)(const double* series, int order, const double* h, double* out);
+  void (*expand_tangent)(const double* consts, const double* series, const double* v, int order,
+                         double* tangent);
 };
 
 TaylorLaneKernel taylor_lane_kernel_portable();
@@ -140,6 +142,74 @@ void expand(const double* consts, const double* x, int order, double* series) {
     for (int c = 0; c < 3; ++c) {
       g[n + 1][c] = (a.s[c] - a.t[c]) * inv;
       store(next + (3 + c) * L, g[n + 1][c]);
+    }
+  }
+}
+
+// The coefficients 0..order of one tangent vector v along the state's series (taylor_tangent.cpp,
+// expand_tangent_lanes with one column): the state's ω^[n] formed again from its m^[n] as there.
+template <class V, int L>
+void expand_tangent(const double* consts, const double* series, const double* v, int order,
+                    double* tangent) {
+  V inv_i[3], k[3], b[3], d_spin[3], d_field[3];
+  for (int c = 0; c < 3; ++c) {
+    inv_i[c] = load<V>(consts + (0 + c) * L);
+    k[c] = load<V>(consts + (3 + c) * L);
+    b[c] = load<V>(consts + (6 + c) * L);
+    d_spin[c] = load<V>(consts + (9 + c) * L);
+    d_field[c] = load<V>(consts + (12 + c) * L);
+  }
+  V xw[K][3], xg[K][3], dw[K][3], dg[K][3];  // the state's ω^[n], γ^[n]; the tangent's
+  for (int n = 0; n < order; ++n) {
+    for (int c = 0; c < 3; ++c) {
+      const V m = load<V>(series + (6 * n + c) * L);
+      xw[n][c] = (n == 0 ? m - k[c] : m) * inv_i[c];
+      xg[n][c] = load<V>(series + (6 * n + 3 + c) * L);
+    }
+  }
+  for (int c = 0; c < 3; ++c) {
+    const V m = load<V>(v + c * L);
+    dw[0][c] = m * inv_i[c];
+    dg[0][c] = load<V>(v + (3 + c) * L);
+    store(tangent + c * L, m);
+    store(tangent + (3 + c) * L, dg[0][c]);
+  }
+  // taylor_tangent.cpp's add(δa, b, a, δb).
+  auto add = [](const V(&da_w)[3], const V(&da_g)[3], const V(&xb_w)[3], const V(&xb_g)[3],
+                const V(&xa_w)[3], const V(&xa_g)[3], const V(&db_w)[3], const V(&db_g)[3],
+                Sums<V>& z) {
+    for (int c = 0; c < 3; ++c) {
+      const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+      z.p[c] += da_w[c1] * xb_w[c2] + xa_w[c1] * db_w[c2];
+      z.rs[c] += da_g[c1] * xb_g[c2] + xa_g[c1] * db_g[c2];
+      z.s[c] += da_g[c1] * xb_w[c2] + xa_g[c1] * db_w[c2];
+      z.t[c] += da_g[c2] * xb_w[c1] + xa_g[c2] * db_w[c1];
+    }
+  };
+  for (int n = 0; n < order; ++n) {
+    Sums<V> z;
+    if (n == 0) {
+      add(dw[0], dg[0], xw[0], xg[0], xw[0], xg[0], dw[0], dg[0], z);
+    } else {
+      for (int j = 1; j < n; ++j)
+        add(dw[j], dg[j], xw[n - j], xg[n - j], xw[j], xg[j], dw[n - j], dg[n - j], z);
+      add(dw[0], dg[0], xw[n], xg[n], xw[n], xg[n], dw[0], dg[0], z);
+      add(dw[n], dg[n], xw[0], xg[0], xw[0], xg[0], dw[n], dg[n], z);
+    }
+    const double inv = kInverse[static_cast<std::size_t>(n)];
+    double* next = tangent + 6 * (n + 1) * L;
+    for (int c = 0; c < 3; ++c) {
+      const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+      const V dm =
+          (d_spin[c] * z.p[c] + d_field[c] * z.rs[c] + (k[c1] * dw[n][c2] - k[c2] * dw[n][c1]) +
+           (dg[n][c1] * b[c2] - dg[n][c2] * b[c1])) *
+          inv;
+      store(next + c * L, dm);
+      dw[n + 1][c] = dm * inv_i[c];
+    }
+    for (int c = 0; c < 3; ++c) {
+      dg[n + 1][c] = (z.s[c] - z.t[c]) * inv;
+      store(next + (3 + c) * L, dg[n + 1][c]);
     }
   }
 }

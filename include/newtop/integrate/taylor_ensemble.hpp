@@ -41,6 +41,14 @@ struct TaylorEnsembleObserver {
   std::function<void(std::size_t point, std::int64_t k, double t, const State& x)> sample;
 };
 
+/// A tangent vector (δm, δγ) of a trajectory.
+using TangentVector = Eigen::Matrix<double, 6, 1>;
+
+/// Called after every accepted step of a tangent run with (point, t, state, tangent vector); it
+/// may change the vector (a renormalisation), which the run then carries on.
+using TaylorTangentObserver =
+    std::function<void(std::size_t point, double t, const State& x, TangentVector& v)>;
+
 /// Taylor's method on many trajectories at once (see the file's comment for the guarantee).
 /// Holds a workspace: one ensemble per thread.
 class TaylorEnsemble {
@@ -63,6 +71,17 @@ class TaylorEnsemble {
                                  std::span<const State> states, double t0, double t1,
                                  const IntegrateOptions& options = {},
                                  const TaylorEnsembleObserver& observer = {});
+
+  /// The same with one tangent vector per trajectory (v0[i], or v0[0] for all), carried by the
+  /// variational equations: each trajectory's Outcome and observed steps are those of
+  /// integrate_tangent_adaptive (newtop/phase/chaos_run.hpp) with TangentTaylorStepper(abs_tol,
+  /// rel_tol) and that vector alone, bit for bit (the step from the state's and the vector's
+  /// coefficients together, as there).
+  std::vector<Outcome> integrate_tangent(std::span<const QuadraticModel> models,
+                                         std::span<const State> states,
+                                         std::span<const TangentVector> v0, double t0, double t1,
+                                         const IntegrateOptions& options,
+                                         const TaylorTangentObserver& observer);
 
  private:
   double abs_tol_, rel_tol_;
