@@ -79,7 +79,7 @@ struct Group {
 std::optional<RunKey> run_key(const SweepFile& s, const io::Scenario& sc) {
   if (sc.model.kind() != FieldKind::quadratic || !is_finite(sc.initial)) return std::nullopt;
   const MethodSettings method = io::resolve_method(sc, s.integrate);
-  if (method.name == "taylor" && !tangent_sweep(s)) {  // the Taylor ensemble (no tangent lanes)
+  if (method.name == "taylor") {  // the Taylor ensemble
     return RunKey{method, SplitOrdering{}, sc.integrate.t0, io::resolve_t_end(sc, s.integrate),
                   sc.integrate.max_steps.value_or(IntegrateOptions{}.max_steps)};
   }
@@ -215,6 +215,44 @@ void run_taylor_group(const SweepFile& s, const Group& g,
   }
 }
 
+/// A group of Taylor tangent runs (megno, lyapunov_max) through the Taylor ensemble with one
+/// tangent vector per point, each the bits of chaos_run's run with TangentTaylorStepper: the same
+/// start vector, the indicators observed (and the vector renormalised) after every step.
+void run_taylor_tangent_group(const SweepFile& s, const Group& g,
+                              std::vector<std::optional<PointResult>>& out) {
+  const RunKey& k = g.key;
+  phase::check_tangent_method(k.method);
+  IntegrateOptions options;
+  options.max_steps = k.max_steps;
+  TaylorEnsemble ensemble(k.method.abs_tol, k.method.rel_tol);
+  std::vector<State> x;
+  std::vector<QuadraticModel> models;
+  for (const Member& p : g.members) {
+    x.push_back(p.initial);
+    models.push_back(p.quadratic);
+  }
+  std::vector<phase::ChaosIndicators> ind(x.size(), phase::ChaosIndicators(k.t0, 1));
+  const std::vector<TangentVector> v0{phase::initial_tangent(1).col(0)};
+  const std::vector<Outcome> r =
+      ensemble.integrate_tangent(models, x, v0, k.t0, k.t1, options,
+                                 [&](std::size_t j, double t, const State&, TangentVector& v) {
+                                   phase::Tangent V = v;
+                                   ind[j](t, V);
+                                   v = V.col(0);
+                                 });
+  for (std::size_t j = 0; j < r.size(); ++j) {
+    if (r[j].status != Status::finished) {
+      out[g.members[j].slot] = PointResult{std::string(to_string(r[j].status)), {}};
+      continue;
+    }
+    const phase::ChaosSample c = ind[j].sample();
+    PointResult p{"ok", {}};
+    for (const std::string& q : s.quantities)
+      p.values.push_back(q == "megno" ? c.megno : c.lyapunov_max);
+    out[g.members[j].slot] = std::move(p);
+  }
+}
+
 /// A group through the ensemble tangent stepper (a model per lane where the models differ) with one
 /// tangent vector per point,
 /// as chaos_run (phase/chaos_run.hpp, integrate_tangent) runs each point: n equal steps, the step
@@ -312,7 +350,9 @@ std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std
   if (runs) *runs = groups.size();
   for (const Group& g : groups) {
     try {
-      if (g.key.method.name == "taylor") {
+      if (g.key.method.name == "taylor" && tangent_sweep(s)) {
+        run_taylor_tangent_group(s, g, out);
+      } else if (g.key.method.name == "taylor") {
         run_taylor_group(s, g, out);
       } else if (tangent_sweep(s)) {
         run_tangent_group(s, g, out);

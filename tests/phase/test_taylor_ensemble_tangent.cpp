@@ -34,20 +34,21 @@ std::vector<Indicators> ensemble_indicators(const std::vector<QuadraticModel>& m
   std::vector<phase::ChaosIndicators> ind(x.size(), phase::ChaosIndicators(0.0, 1));
   TaylorEnsemble e(tol, tol, path);
   const std::vector<TangentVector> v0{phase::initial_tangent(1).col(0)};
-  const std::vector<Outcome> out = e.integrate_tangent(
-      models, x, v0, 0.0, t1, IntegrateOptions{},
-      [&](std::size_t p, double t, const State&, TangentVector& v) {
-        phase::Tangent V = v;
-        ind[p](t, V);
-        v = V.col(0);
-      });
+  const std::vector<Outcome> out =
+      e.integrate_tangent(models, x, v0, 0.0, t1, IntegrateOptions{},
+                          [&](std::size_t p, double t, const State&, TangentVector& v) {
+                            phase::Tangent V = v;
+                            ind[p](t, V);
+                            v = V.col(0);
+                          });
   std::vector<Indicators> r;
   for (std::size_t i = 0; i < x.size(); ++i) r.push_back({out[i], ind[i].sample()});
   return r;
 }
 
 TEST(TaylorEnsembleTangent, IndicatorsAreChaosRunsBitsForEveryBatchSize) {
-  if (test::kScalarMayContract) GTEST_SKIP() << "the scalar recurrences may use fused multiply-adds";
+  if (test::kScalarMayContract)
+    GTEST_SKIP() << "the scalar recurrences may use fused multiply-adds";
   constexpr double kTol = 1e-10, kT = 20.0;
   for (std::size_t n : {1, 3, 8, 17}) {
     const std::vector<QuadraticModel> models =
@@ -60,9 +61,8 @@ TEST(TaylorEnsembleTangent, IndicatorsAreChaosRunsBitsForEveryBatchSize) {
       for (std::size_t i = 0; i < n; ++i) {
         const phase::ChaosResult ref = phase::chaos_run(MethodSettings("taylor", 0.0, kTol, kTol),
                                                         Model(models[i]), x[i], 0.0, kT, {}, false);
-        const std::string what =
-            "n " + std::to_string(n) + ", " + std::string(simd_path_name(path)) + ", point " +
-            std::to_string(i);
+        const std::string what = "n " + std::to_string(n) + ", " +
+                                 std::string(simd_path_name(path)) + ", point " + std::to_string(i);
         ASSERT_EQ(got[i].out.status, ref.outcome.status) << what;
         EXPECT_EQ(got[i].out.steps, ref.outcome.steps) << what;
         EXPECT_TRUE(same_bits(got[i].out.state.m.x(), ref.outcome.state.m.x())) << what;

@@ -208,6 +208,20 @@ TEST(SweepEnsemble, MegnoMapIsEvaluatePointsBits) {
   expect_points_differ(s, 0, 24, 1);  // the map is not flat
 }
 
+// The MEGNO map with a tolerance (method taylor): one Taylor ensemble tangent run, every point
+// the bits of newtop chaos's scalar Taylor run (evaluate_point).
+TEST(SweepEnsemble, TaylorMegnoMapIsEvaluatePointsBits) {
+  const std::string sweep =
+      "scenario = \"" + std::string(NEWTOP_SOURCE_DIR) +
+      "/examples/section_chaotic.toml\"\nquantities = [\"megno\", \"lyapunov_max\"]\n"
+      "[[axes]]\nkey = \"initial.omega[0]\"\nstart = -1.5\nstop = 1.5\ncount = 5\n"
+      "[[axes]]\nkey = \"initial.omega[1]\"\nstart = -1.5\nstop = 1.5\ncount = 5\n"
+      "[integrate]\nt_end = 30.0\nmethod = \"taylor\"\ntol = 1e-10\n";
+  const SweepFile s = newtop::sweep::load_sweep(write_file("megno_taylor.toml", sweep));
+  expect_point_by_point(s);
+  expect_points_differ(s, 0, 12, 0);  // the map is not flat
+}
+
 // MEGNO over the model's numbers (A across B, λ of both signs) in one ensemble tangent run, a
 // model per lane: every point the bits of its own tangent run.
 TEST(SweepEnsemble, MegnoOverModelParametersInOneRun) {
