@@ -48,8 +48,8 @@ std::vector<std::pair<hy::expression, hy::expression>> euler_poisson(const Quadr
 WpPoint heyoka_batch(const Regime& r, const LState& ref, double tol, std::uint32_t lanes,
                      int rounds) {
   std::vector<double> start(6 * lanes);
-  const double x0[6] = {r.x0.m[0], r.x0.m[1], r.x0.m[2], r.x0.gamma[0], r.x0.gamma[1],
-                        r.x0.gamma[2]};
+  const double x0[6] = {r.x0.m[0],     r.x0.m[1],     r.x0.m[2],
+                        r.x0.gamma[0], r.x0.gamma[1], r.x0.gamma[2]};
   for (std::uint32_t l = 0; l < lanes; ++l) {
     for (int i = 0; i < 6; ++i) start[i * lanes + l] = x0[i];
   }
@@ -59,9 +59,9 @@ WpPoint heyoka_batch(const Regime& r, const LState& ref, double tol, std::uint32
     ta.set_time(std::vector<double>(lanes, 0.0));
     ta.propagate_until(r.T);
   });
-  const State x{Vec3(ta.get_state()[0], ta.get_state()[lanes], ta.get_state()[2 * lanes]),
-                Vec3(ta.get_state()[3 * lanes], ta.get_state()[4 * lanes],
-                     ta.get_state()[5 * lanes])};
+  const State x{
+      Vec3(ta.get_state()[0], ta.get_state()[lanes], ta.get_state()[2 * lanes]),
+      Vec3(ta.get_state()[3 * lanes], ta.get_state()[4 * lanes], ta.get_state()[5 * lanes])};
   return {tol, state_error(x, ref), cpu / lanes};
 }
 
