@@ -24,10 +24,15 @@ namespace {
 /// One Model or a sequence of Models (one per state), each of the quadratic field.
 std::vector<QuadraticModel> quadratic_models(const py::object& models) {
   std::vector<Model> given;
-  if (py::isinstance<Model>(models)) {
-    given.push_back(models.cast<Model>());
-  } else {
-    given = models.cast<std::vector<Model>>();
+  try {
+    if (py::isinstance<Model>(models)) {
+      given.push_back(models.cast<Model>());
+    } else {
+      given = models.cast<std::vector<Model>>();
+    }
+  } catch (const py::cast_error&) {
+    throw InputError("model_or_models: expected a Model or a sequence of Models, found " +
+                     std::string(py::str(py::type::of(models).attr("__name__"))));
   }
   std::vector<QuadraticModel> q;
   for (const Model& m : given) {
@@ -38,7 +43,7 @@ std::vector<QuadraticModel> quadratic_models(const py::object& models) {
 }
 
 /// A sequence of States, or an (N × 6) array of rows (m, γ).
-std::vector<State> states_of(const py::object& states) {
+std::vector<State> states_of(const py::object& states) try {
   if (py::isinstance<py::array>(states)) {
     const auto a = states.cast<py::array_t<double, py::array::c_style | py::array::forcecast>>();
     if (a.ndim() != 2 || a.shape(1) != 6) {
@@ -53,6 +58,11 @@ std::vector<State> states_of(const py::object& states) {
     return x;
   }
   return states.cast<std::vector<State>>();
+} catch (const py::cast_error&) {
+  throw InputError(
+      "states: expected a sequence of State or an (N x 6) array of numbers (rows m, gamma), "
+      "found " +
+      std::string(py::str(py::type::of(states).attr("__name__"))));
 }
 
 /// An array of shape `shape` filled with NaN.

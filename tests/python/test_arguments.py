@@ -132,6 +132,12 @@ WORKER = textwrap.dedent(
             tol=None if rng.random() < 0.6 else scalar_or_array(),
             max_steps=[1, 2, 50, 0, -1, -(2 ** 62)][int(rng.integers(0, 6))],
             quaternion=None if rng.random() < 0.5 else array((4,))),
+        "integrate_ensemble": lambda: newtop.integrate_ensemble(
+            [model, [model, model], [model] * 3][int(rng.integers(0, 3))],
+            array((int(rng.integers(0, 4)), 6)) if rng.random() < 0.5 else [state] * 3,
+            scalar_or_array(), tol=scalar_or_array(), t0=scalar_or_array(),
+            max_steps=[1, 2, 50, 0, -1, -(2 ** 62)][int(rng.integers(0, 6))],
+            t_eval=None if rng.random() < 0.5 else array((int(rng.integers(0, 4)),))),
     }
 
     for name in sorted(CALLS):
