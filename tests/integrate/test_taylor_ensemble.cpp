@@ -155,6 +155,21 @@ TEST(TaylorEnsemble, BitIdenticalWhereRunsStopEarly) {
   expect_scalar_agreement(underflow, "underflow");
 }
 
+TEST(TaylorEnsemble, BitIdenticalWhereSeriesAreNotFinite) {
+  // m of 1e160 among ordinary points: the products of the recurrences overflow, the series is not
+  // finite, every trial from the given first step on is rejected and retried 5× shorter until the
+  // step underflows; the other lanes carry on. The rejections and the outcome are the scalar driver's.
+  Runs r = random_runs(7, true, 1e-10, 77);
+  r.states[2].m *= 1e160;
+  r.states[5].m *= 1e160;
+  r.options.initial_step = 0.5;  // a finite first trial (the step of such a series is NaN)
+  expect_scalar_agreement(r, "not finite");
+  const std::vector<Record> ref = scalar_runs(r, OutputTimes::every(1.0, r.t0, r.t1));
+  EXPECT_EQ(ref[2].out.status, Status::step_size_underflow);
+  EXPECT_GT(ref[2].out.rejected, 0);
+  EXPECT_EQ(ref[3].out.status, Status::finished);
+}
+
 TEST(TaylorEnsemble, ReachesTheEndAndIsIndependentOfTheLane) {
   // The same point first and last in a batch of 13 (two refills of the widest block).
   Runs r = random_runs(13, true, 1e-10, 55);
