@@ -22,9 +22,13 @@ void expand_tangent(const double* consts, const double* series, const double* v,
   taylor_ensemble_simd::expand_tangent<V, kLanes>(consts, series, v, order, tangent);
 }
 
+void norms(const double* series, const double* tangent, int order, double* out) {
+  taylor_ensemble_simd::norms<V, kLanes>(series, tangent, order, out);
+}
+
 }  // namespace
 
-TaylorLaneKernel taylor_lane_kernel_avx2() { return {kLanes, expand, sum, expand_tangent}; }
+TaylorLaneKernel taylor_lane_kernel_avx2() { return {kLanes, expand, sum, expand_tangent, norms}; }
 
 }  // namespace newtop::detail
 #endif

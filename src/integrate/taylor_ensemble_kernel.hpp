@@ -27,6 +27,9 @@ struct TaylorLaneKernel {
   void (*sum)(const double* series, int order, const double* h, double* out);
   void (*expand_tangent)(const double* consts, const double* series, const double* v, int order,
                          double* tangent);
+  /// The max norms (taylor_lanes::pair_norm) of the coefficients 0, order − 1 and order of each
+  /// lane's series, at norms[k L + l]; with `tangent`, nan_max of the state's and the tangent's.
+  void (*norms)(const double* series, const double* tangent, int order, double* norms);
 };
 
 TaylorLaneKernel taylor_lane_kernel_portable();
@@ -211,6 +214,43 @@ void expand_tangent(const double* consts, const double* series, const double* v,
       dg[n + 1][c] = (z.s[c] - z.t[c]) * inv;
       store(next + (3 + c) * L, dg[n + 1][c]);
     }
+  }
+}
+
+// |v| lane by lane (std::abs: the sign bit cleared).
+template <class V, int L>
+[[gnu::always_inline]] inline V abs_of(V v) {
+  for (int i = 0; i < L; ++i) v[i] = __builtin_fabs(v[i]);
+  return v;
+}
+
+// taylor_lanes::nan_max, lane by lane: a where a >= b or a is NaN, b elsewhere.
+template <class V>
+[[gnu::always_inline]] inline V nan_max(V a, V b) {
+  return ((a >= b) | (a != a)) ? a : b;
+}
+
+// taylor_lanes::pair_norm of the coefficient n, lane by lane: the same selections (norm_inf keeps
+// a component unless it is <= the norm so far).
+template <class V, int L>
+[[gnu::always_inline]] inline V pair_norm(const double* series, int n) {
+  V half[2] = {V{}, V{}};
+  for (int h = 0; h < 2; ++h) {
+    for (int c = 0; c < 3; ++c) {
+      const V v = abs_of<V, L>(load<V>(series + (6 * n + 3 * h + c) * L));
+      half[h] = (v <= half[h]) ? half[h] : v;
+    }
+  }
+  return nan_max(half[0], half[1]);
+}
+
+template <class V, int L>
+void norms(const double* series, const double* tangent, int order, double* out) {
+  const int at[3] = {0, order - 1, order};
+  for (int k = 0; k < 3; ++k) {
+    V r = pair_norm<V, L>(series, at[k]);
+    if (tangent != nullptr) r = nan_max(r, pair_norm<V, L>(tangent, at[k]));
+    store(out + k * L, r);
   }
 }
 
