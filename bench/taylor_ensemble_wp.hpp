@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "newtop/integrate/taylor_ensemble.hpp"
+#include "newtop/phase/chaos.hpp"
+#include "newtop/phase/tangent_vectors.hpp"
 #include "wp_support.hpp"
 
 namespace wp {
@@ -70,6 +72,43 @@ inline WpPoint ensemble_taylor(const Regime& r, const LState& ref, double tol, s
   const std::vector<QuadraticModel> models{r.model};
   std::vector<Outcome> out;
   const double cpu = best_cpu(rounds, [&] { out = e.integrate(models, x, 0.0, r.T); });
+  for (const Outcome& o : out) {
+    same_bits = same_bits && o.state.m == scalar.m && o.state.gamma == scalar.gamma;
+  }
+  return {tol, state_error(out[0].state, ref), cpu / static_cast<double>(n)};
+}
+
+/// The same with one tangent vector and the chaos indicators (newtop chaos's run, chaos_run with
+/// method taylor): the final state's error and the CPU time.
+inline WpPoint scalar_taylor_tangent(const Regime& r, const LState& ref, double tol, int rounds,
+                                     State& final_state) {
+  phase::ChaosResult out;
+  const double cpu = best_cpu(rounds, [&] {
+    out = phase::chaos_run(MethodSettings("taylor", 0.0, tol, tol), Model(r.model), r.x0, 0.0, r.T,
+                           IntegrateOptions{}, false);
+  });
+  final_state = out.outcome.state;
+  return {tol, state_error(out.outcome.state, ref), cpu};
+}
+
+/// The Taylor ensemble's tangent runs on n copies of the start, the indicators observed per lane.
+inline WpPoint ensemble_taylor_tangent(const Regime& r, const LState& ref, double tol,
+                                       std::size_t n, int rounds, const State& scalar,
+                                       bool& same_bits) {
+  TaylorEnsemble e(tol, tol);
+  const std::vector<State> x(n, r.x0);
+  const std::vector<QuadraticModel> models{r.model};
+  const std::vector<TangentVector> v0{phase::initial_tangent(1).col(0)};
+  std::vector<Outcome> out;
+  const double cpu = best_cpu(rounds, [&] {
+    std::vector<phase::ChaosIndicators> ind(n, phase::ChaosIndicators(0.0, 1));
+    out = e.integrate_tangent(models, x, v0, 0.0, r.T, IntegrateOptions{},
+                              [&](std::size_t p, double t, const State&, TangentVector& v) {
+                                phase::Tangent V = v;
+                                ind[p](t, V);
+                                v = V.col(0);
+                              });
+  });
   for (const Outcome& o : out) {
     same_bits = same_bits && o.state.m == scalar.m && o.state.gamma == scalar.gamma;
   }
