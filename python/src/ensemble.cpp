@@ -65,12 +65,25 @@ std::vector<State> states_of(const py::object& states) try {
       std::string(py::str(py::type::of(states).attr("__name__"))));
 }
 
-/// An array of shape `shape` filled with NaN.
-py::array_t<double> nan_array(std::vector<py::ssize_t> shape) {
-  py::array_t<double> a(shape);
-  std::fill(a.mutable_data(), a.mutable_data() + a.size(),
-            std::numeric_limits<double>::quiet_NaN());
-  return a;
+/// Sets d["m"], d["omega"], d["gamma"]: arrays of shape `shape` + (3) over `rows` rows in order,
+/// row r from at(r) = (body, state), or NaN where at(r) gives no state.
+template <class At>
+void put_states(py::dict& d, std::vector<py::ssize_t> shape, std::size_t rows, At&& at) {
+  std::vector<double> m(3 * rows, std::numeric_limits<double>::quiet_NaN()), w = m, g = m;
+  for (std::size_t r = 0; r < rows; ++r) {
+    const std::optional<std::pair<const Body*, State>> x = at(r);
+    if (!x) continue;
+    const Vec3 om = omega(*x->first, x->second);
+    for (int c = 0; c < 3; ++c) {
+      m[3 * r + c] = x->second.m[c];
+      w[3 * r + c] = om[c];
+      g[3 * r + c] = x->second.gamma[c];
+    }
+  }
+  shape.push_back(3);
+  d["m"] = py::array_t<double>(shape, m.data());
+  d["omega"] = py::array_t<double>(shape, w.data());
+  d["gamma"] = py::array_t<double>(shape, g.data());
 }
 
 py::dict integrate_ensemble(const py::object& model_or_models, const py::object& states_in,
@@ -85,21 +98,13 @@ py::dict integrate_ensemble(const py::object& model_or_models, const py::object&
   check_time_span(t0, t_end);
   std::optional<OutputTimes> times;
   if (t_eval) times = OutputTimes::list(*t_eval, t0, t_end);
-  const auto n = static_cast<py::ssize_t>(states.size());
-  const py::ssize_t k = times ? static_cast<py::ssize_t>(times->size()) : 0;
-  std::vector<double> samples(times ? static_cast<std::size_t>(n * k * 6) : 0,
-                              std::numeric_limits<double>::quiet_NaN());
+  const std::size_t n = states.size(), k = times ? static_cast<std::size_t>(times->size()) : 0;
+  std::vector<std::optional<State>> samples(n * k);  // point p, time j at p k + j
   TaylorEnsembleObserver obs;
   if (times) {
     obs.times = &*times;
     obs.sample = [&](std::size_t p, std::int64_t j, double, const State& x) {
-      double* row = samples.data() + (static_cast<std::size_t>(p) * static_cast<std::size_t>(k) +
-                                      static_cast<std::size_t>(j)) *
-                                         6;
-      for (int c = 0; c < 3; ++c) {
-        row[c] = x.m[c];
-        row[3 + c] = x.gamma[c];
-      }
+      samples[p * k + static_cast<std::size_t>(j)] = x;
     };
   }
   std::vector<Outcome> out;
@@ -108,66 +113,30 @@ py::dict integrate_ensemble(const py::object& model_or_models, const py::object&
     const py::gil_scoped_release unlocked;
     out = ensemble.integrate(models, states, t0, t_end, options, obs);
   }
-  auto body = [&](std::size_t p) -> const Body& { return models[models.size() == 1 ? 0 : p].body; };
+  auto body = [&](std::size_t p) { return &models[models.size() == 1 ? 0 : p].body; };
   py::dict d;
-  py::list outcome;
-  py::array_t<std::int64_t> steps(n);
-  for (py::ssize_t p = 0; p < n; ++p) {
-    const auto i = static_cast<std::size_t>(p);
-    outcome.append(std::string(to_string(out[i].status)));
-    steps.mutable_at(p) = out[i].steps;
-  }
-  // m, ω, γ of point p's state x into at[0..8].
-  auto fill = [&](std::size_t p, double* at, const State& x) {
-    const Vec3 om = omega(body(p), x);
-    for (int c = 0; c < 3; ++c) {
-      at[c] = x.m[c];
-      at[3 + c] = om[c];
-      at[6 + c] = x.gamma[c];
-    }
-  };
+  const auto N = static_cast<py::ssize_t>(n);
   if (times) {
-    py::array_t<double> m = nan_array({n, k, 3}), w = nan_array({n, k, 3}),
-                        g = nan_array({n, k, 3});
-    for (std::size_t p = 0; p < states.size(); ++p) {
-      for (py::ssize_t j = 0; j < k; ++j) {
-        const double* row = samples.data() + (p * static_cast<std::size_t>(k) + j) * 6;
-        if (std::isnan(row[0]) && std::isnan(row[3])) continue;  // after the run stopped
-        const State x{Vec3(row[0], row[1], row[2]), Vec3(row[3], row[4], row[5])};
-        double v[9];
-        fill(p, v, x);
-        for (int c = 0; c < 3; ++c) {
-          const auto pi = static_cast<py::ssize_t>(p);
-          m.mutable_at(pi, j, c) = v[c];
-          w.mutable_at(pi, j, c) = v[3 + c];
-          g.mutable_at(pi, j, c) = v[6 + c];
-        }
-      }
-    }
-    d["t"] = py::array_t<double>(k, t_eval->data());
-    d["m"] = m;
-    d["omega"] = w;
-    d["gamma"] = g;
+    d["t"] = py::array_t<double>(static_cast<py::ssize_t>(k), t_eval->data());
+    put_states(d, {N, static_cast<py::ssize_t>(k)}, n * k, [&](std::size_t r) {
+      const std::optional<State>& x = samples[r];
+      return x ? std::optional(std::pair(body(r / k), *x)) : std::nullopt;
+    });
   } else {
-    py::array_t<double> t(n), m = nan_array({n, 3}), w = nan_array({n, 3}), g = nan_array({n, 3});
-    for (std::size_t p = 0; p < states.size(); ++p) {
-      const auto pi = static_cast<py::ssize_t>(p);
-      t.mutable_at(pi) = out[p].t;
-      double v[9];
-      fill(p, v, out[p].state);
-      for (int c = 0; c < 3; ++c) {
-        m.mutable_at(pi, c) = v[c];
-        w.mutable_at(pi, c) = v[3 + c];
-        g.mutable_at(pi, c) = v[6 + c];
-      }
-    }
-    d["t"] = t;
-    d["m"] = m;
-    d["omega"] = w;
-    d["gamma"] = g;
+    std::vector<double> t;
+    for (const Outcome& o : out) t.push_back(o.t);
+    d["t"] = py::array_t<double>(N, t.data());
+    put_states(d, {N}, n,
+               [&](std::size_t p) { return std::optional(std::pair(body(p), out[p].state)); });
+  }
+  py::list outcome;
+  std::vector<std::int64_t> steps;
+  for (const Outcome& o : out) {
+    outcome.append(std::string(to_string(o.status)));
+    steps.push_back(o.steps);
   }
   d["outcome"] = outcome;
-  d["steps"] = steps;
+  d["steps"] = py::array_t<std::int64_t>(N, steps.data());
   d["order"] = TaylorStepper(tol, tol).order();
   return d;
 }

@@ -59,6 +59,10 @@ def test_t_eval_and_one_model_for_all():
         one = newtop.integrate(models[0], s, T_END, tol=TOL, method="taylor", t_eval=times)
         assert np.array_equal(run["m"][i], one["m"])
         assert np.array_equal(run["gamma"][i], one["gamma"])
+    # A run stopped by its step limit: its later times are NaN, never a number.
+    short = newtop.integrate_ensemble(models[0], rows, T_END, tol=TOL, t_eval=times, max_steps=2)
+    assert short["outcome"] == ["step_limit"] * 9
+    assert np.all(np.isfinite(short["m"][:, 0])) and np.all(np.isnan(short["m"][:, -1]))
 
 
 def test_bad_input_is_refused():
