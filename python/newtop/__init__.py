@@ -18,7 +18,7 @@ __version__ = "0.1.0"
 try:  # the compiled extension, when the build made one (PYTHONPATH=build/python)
     from ._newtop import (Body, InputError, MassModel, Model, QuadraticField, Scenario, State,  # noqa: F401
                           brun_state_at, conserved_integrals, equilibrium_family, integrate,
-                          integrate_ensemble, is_orbit_scenario,
+                          integrate_ensemble, chaos_ensemble, is_orbit_scenario,
                           load_scenario, parse_scenario, resonance_family, rotation_family)
     from ._newtop import integrals as integrals_at  # noqa: F401  (the library's, at a state)
     from ._newtop import (AnalyticResult, ChaosResult, Equilibria, Section,  # noqa: F401
@@ -38,6 +38,6 @@ if HAVE_EXTENSION:
     __all__ += ["AnalyticResult", "ChaosResult", "Equilibria", "Section", "StabilityReport",
                 "Body", "InputError", "MassModel", "Model", "QuadraticField", "Scenario", "State",
                 "analytic", "chaos", "conserved_integrals", "equilibria", "field", "find_integrals",
-                "integrals", "integrals_at", "integrate", "integrate_ensemble", "is_orbit_scenario", "libration",
+                "integrals", "integrals_at", "integrate", "integrate_ensemble", "chaos_ensemble", "is_orbit_scenario", "libration",
                 "load_scenario", "parse_scenario", "rotations", "section", "simulate", "stability", "sweep",
                 "view"]

@@ -20,7 +20,8 @@ void bind_mass_models(pybind11::module_& m);
 /// integrate(): a run into numpy arrays (trajectory.cpp).
 void bind_trajectory(pybind11::module_& m);
 
-/// integrate_ensemble(): many trajectories through the Taylor ensemble (ensemble.cpp).
+/// integrate_ensemble(), chaos_ensemble(): many trajectories through the Taylor ensemble
+/// (ensemble.cpp).
 void bind_ensemble(pybind11::module_& m);
 
 /// equilibria, stability, chaos, section and analytic on Python objects (analyses.cpp).

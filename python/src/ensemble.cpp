@@ -15,6 +15,7 @@
 #include "newtop/integrate/taylor.hpp"
 #include "newtop/integrate/taylor_ensemble.hpp"
 #include "newtop/model/state_checks.hpp"
+#include "newtop/phase/chaos_ensemble.hpp"
 
 namespace py = pybind11;
 
@@ -141,9 +142,47 @@ py::dict integrate_ensemble(const py::object& model_or_models, const py::object&
   return d;
 }
 
+py::dict chaos_ensemble(const py::object& model_or_models, const py::object& states_in,
+                        double t_end, double tol, double t0,
+                        std::optional<std::int64_t> max_steps) {
+  const std::vector<QuadraticModel> models = quadratic_models(model_or_models);
+  const std::vector<State> states = states_of(states_in);
+  for (const State& x : states) validate(x);
+  IntegrateOptions options;
+  if (max_steps) options.max_steps = *max_steps;
+  std::vector<phase::ChaosResult> r;
+  {
+    const py::gil_scoped_release unlocked;
+    r = phase::taylor_chaos_ensemble(models, states, t0, t_end, tol, tol, options);
+  }
+  std::vector<double> megno, lyapunov, fli;
+  py::list outcome;
+  for (const phase::ChaosResult& c : r) {
+    megno.push_back(c.indicators.megno);
+    lyapunov.push_back(c.indicators.lyapunov_max);
+    fli.push_back(c.indicators.fli);
+    outcome.append(std::string(to_string(c.outcome.status)));
+  }
+  const auto n = static_cast<py::ssize_t>(r.size());
+  py::dict d;
+  d["megno"] = py::array_t<double>(n, megno.data());
+  d["lyapunov_max"] = py::array_t<double>(n, lyapunov.data());
+  d["fli"] = py::array_t<double>(n, fli.data());
+  d["outcome"] = outcome;
+  return d;
+}
+
 }  // namespace
 
 void bind_ensemble(py::module_& m) {
+  m.def("chaos_ensemble", &chaos_ensemble, py::arg("model_or_models"), py::arg("states"),
+        py::arg("t_end"), py::kw_only(), py::arg("tol"), py::arg("t0") = 0.0,
+        py::arg("max_steps") = py::none(),
+        "The chaos indicators of N starts at once (docs/chaos.md) through the Taylor ensemble's "
+        "tangent runs: each the bits of newtop.chaos(model, state, t_end, tol=tol, "
+        "method='taylor'). Arguments as integrate_ensemble. Returns a dict of arrays (N): megno, "
+        "lyapunov_max, fli, and 'outcome' (N strings; the indicators of a run that stopped are "
+        "those up to where it stopped).");
   m.def("integrate_ensemble", &integrate_ensemble, py::arg("model_or_models"), py::arg("states"),
         py::arg("t_end"), py::kw_only(), py::arg("tol"), py::arg("t0") = 0.0,
         py::arg("max_steps") = py::none(), py::arg("t_eval") = py::none(),

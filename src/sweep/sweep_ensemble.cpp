@@ -16,6 +16,7 @@
 #include "newtop/integrate/taylor_ensemble.hpp"
 #include "newtop/model/integrals.hpp"
 #include "newtop/phase/chaos.hpp"
+#include "newtop/phase/chaos_ensemble.hpp"
 #include "newtop/phase/ensemble_tangent.hpp"
 #include "newtop/phase/tangent_vectors.hpp"
 
@@ -224,31 +225,22 @@ void run_taylor_tangent_group(const SweepFile& s, const Group& g,
   phase::check_tangent_method(k.method);
   IntegrateOptions options;
   options.max_steps = k.max_steps;
-  TaylorEnsemble ensemble(k.method.abs_tol, k.method.rel_tol);
   std::vector<State> x;
   std::vector<QuadraticModel> models;
   for (const Member& p : g.members) {
     x.push_back(p.initial);
     models.push_back(p.quadratic);
   }
-  std::vector<phase::ChaosIndicators> ind(x.size(), phase::ChaosIndicators(k.t0, 1));
-  const std::vector<TangentVector> v0{phase::initial_tangent(1).col(0)};
-  const std::vector<Outcome> r =
-      ensemble.integrate_tangent(models, x, v0, k.t0, k.t1, options,
-                                 [&](std::size_t j, double t, const State&, TangentVector& v) {
-                                   phase::Tangent V = v;
-                                   ind[j](t, V);
-                                   v = V.col(0);
-                                 });
+  const std::vector<phase::ChaosResult> r = phase::taylor_chaos_ensemble(
+      models, x, k.t0, k.t1, k.method.abs_tol, k.method.rel_tol, options);
   for (std::size_t j = 0; j < r.size(); ++j) {
-    if (r[j].status != Status::finished) {
-      out[g.members[j].slot] = PointResult{std::string(to_string(r[j].status)), {}};
+    if (r[j].outcome.status != Status::finished) {
+      out[g.members[j].slot] = PointResult{std::string(to_string(r[j].outcome.status)), {}};
       continue;
     }
-    const phase::ChaosSample c = ind[j].sample();
     PointResult p{"ok", {}};
     for (const std::string& q : s.quantities)
-      p.values.push_back(q == "megno" ? c.megno : c.lyapunov_max);
+      p.values.push_back(q == "megno" ? r[j].indicators.megno : r[j].indicators.lyapunov_max);
     out[g.members[j].slot] = std::move(p);
   }
 }

@@ -1,5 +1,6 @@
-// The Taylor ensemble's tangent runs against newtop chaos's scalar run of each point (chaos_run
-// with method taylor and one tangent vector): the same Outcome and the same MEGNO, λ_max and FLI,
+// The chaos indicators of many starts through the Taylor ensemble's tangent runs
+// (taylor_chaos_ensemble) against newtop chaos's scalar run of each point (chaos_run with method
+// taylor and one tangent vector): the same Outcome and the same MEGNO, λ_max and FLI,
 // bit for bit, for batches of 1, 3, 8 and 17 points, a model per point, on every instruction set.
 
 #include <gtest/gtest.h>
@@ -10,9 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "newtop/integrate/taylor_ensemble.hpp"
 #include "newtop/phase/chaos.hpp"
-#include "newtop/phase/tangent_vectors.hpp"
+#include "newtop/phase/chaos_ensemble.hpp"
 #include "support/ensemble.hpp"
 
 namespace newtop {
@@ -20,30 +20,6 @@ namespace {
 
 bool same_bits(double a, double b) {
   return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
-
-struct Indicators {
-  Outcome out;
-  phase::ChaosSample sample;
-};
-
-// The ensemble's tangent run of every point, the indicators observed as chaos_run observes them.
-std::vector<Indicators> ensemble_indicators(const std::vector<QuadraticModel>& models,
-                                            const std::vector<State>& x, double tol, double t1,
-                                            SimdPath path) {
-  std::vector<phase::ChaosIndicators> ind(x.size(), phase::ChaosIndicators(0.0, 1));
-  TaylorEnsemble e(tol, tol, path);
-  const std::vector<TangentVector> v0{phase::initial_tangent(1).col(0)};
-  const std::vector<Outcome> out =
-      e.integrate_tangent(models, x, v0, 0.0, t1, IntegrateOptions{},
-                          [&](std::size_t p, double t, const State&, TangentVector& v) {
-                            phase::Tangent V = v;
-                            ind[p](t, V);
-                            v = V.col(0);
-                          });
-  std::vector<Indicators> r;
-  for (std::size_t i = 0; i < x.size(); ++i) r.push_back({out[i], ind[i].sample()});
-  return r;
 }
 
 TEST(TaylorEnsembleTangent, IndicatorsAreChaosRunsBitsForEveryBatchSize) {
@@ -57,20 +33,21 @@ TEST(TaylorEnsembleTangent, IndicatorsAreChaosRunsBitsForEveryBatchSize) {
     std::vector<State> x;
     for (const QuadraticModel& m : models) x.push_back(test::random_start(m.body, 2.0, rng));
     for (SimdPath path : test::available_paths()) {
-      const std::vector<Indicators> got = ensemble_indicators(models, x, kTol, kT, path);
+      const std::vector<phase::ChaosResult> got =
+          phase::taylor_chaos_ensemble(models, x, 0.0, kT, kTol, kTol, {}, path);
       for (std::size_t i = 0; i < n; ++i) {
         const phase::ChaosResult ref = phase::chaos_run(MethodSettings("taylor", 0.0, kTol, kTol),
                                                         Model(models[i]), x[i], 0.0, kT, {}, false);
         const std::string what = "n " + std::to_string(n) + ", " +
                                  std::string(simd_path_name(path)) + ", point " + std::to_string(i);
-        ASSERT_EQ(got[i].out.status, ref.outcome.status) << what;
-        EXPECT_EQ(got[i].out.steps, ref.outcome.steps) << what;
-        EXPECT_TRUE(same_bits(got[i].out.state.m.x(), ref.outcome.state.m.x())) << what;
-        EXPECT_TRUE(same_bits(got[i].out.state.gamma.z(), ref.outcome.state.gamma.z())) << what;
-        EXPECT_TRUE(same_bits(got[i].sample.megno, ref.indicators.megno))
-            << what << ": " << got[i].sample.megno << " vs " << ref.indicators.megno;
-        EXPECT_TRUE(same_bits(got[i].sample.lyapunov_max, ref.indicators.lyapunov_max)) << what;
-        EXPECT_TRUE(same_bits(got[i].sample.fli, ref.indicators.fli)) << what;
+        ASSERT_EQ(got[i].outcome.status, ref.outcome.status) << what;
+        EXPECT_EQ(got[i].outcome.steps, ref.outcome.steps) << what;
+        EXPECT_TRUE(same_bits(got[i].outcome.state.m.x(), ref.outcome.state.m.x())) << what;
+        EXPECT_TRUE(same_bits(got[i].outcome.state.gamma.z(), ref.outcome.state.gamma.z())) << what;
+        EXPECT_TRUE(same_bits(got[i].indicators.megno, ref.indicators.megno))
+            << what << ": " << got[i].indicators.megno << " vs " << ref.indicators.megno;
+        EXPECT_TRUE(same_bits(got[i].indicators.lyapunov_max, ref.indicators.lyapunov_max)) << what;
+        EXPECT_TRUE(same_bits(got[i].indicators.fli, ref.indicators.fli)) << what;
       }
     }
   }

@@ -138,6 +138,11 @@ WORKER = textwrap.dedent(
             scalar_or_array(), tol=scalar_or_array(), t0=scalar_or_array(),
             max_steps=[1, 2, 50, 0, -1, -(2 ** 62)][int(rng.integers(0, 6))],
             t_eval=None if rng.random() < 0.5 else array((int(rng.integers(0, 4)),))),
+        "chaos_ensemble": lambda: newtop.chaos_ensemble(
+            [model, [model, model], [model] * 3][int(rng.integers(0, 3))],
+            array((int(rng.integers(0, 4)), 6)) if rng.random() < 0.5 else [state] * 3,
+            scalar_or_array(), tol=scalar_or_array(), t0=scalar_or_array(),
+            max_steps=[1, 2, 50, 0, -1, -(2 ** 62)][int(rng.integers(0, 6))]),
     }
 
     for name in sorted(CALLS):

@@ -1,7 +1,8 @@
 """newtop.integrate_ensemble (the Taylor ensemble): every trajectory of a batch of 1, 3, 8 or 17,
 one model for all or one per trajectory, is the bits of newtop.integrate of that point alone with
 method taylor at the same tolerance — the end of the run, and the states at t_eval; bad input
-raises ValueError before any work.
+raises ValueError before any work. newtop.chaos_ensemble: each start's MEGNO, lambda_max and FLI
+are the bits of newtop.chaos with method taylor.
 
 Run by ctest with NEWTOP_PYTHON_MODULE (build/python) set (tests/python/CMakeLists.txt)."""
 
@@ -63,6 +64,18 @@ def test_t_eval_and_one_model_for_all():
     short = newtop.integrate_ensemble(models[0], rows, T_END, tol=TOL, t_eval=times, max_steps=2)
     assert short["outcome"] == ["step_limit"] * 9
     assert np.all(np.isfinite(short["m"][:, 0])) and np.all(np.isnan(short["m"][:, -1]))
+
+
+def test_chaos_ensemble_is_chaos_point_by_point():
+    rng = np.random.default_rng(8)
+    models, states = models_and_states(10, rng)
+    many = newtop.chaos_ensemble(models, states, 20.0, tol=TOL)
+    assert many["outcome"] == ["finished"] * 10
+    for i in range(10):
+        one = newtop.chaos(models[i], states[i], 20.0, tol=TOL, method="taylor")
+        assert many["megno"][i] == one.megno
+        assert many["lyapunov_max"][i] == one.lyapunov_max
+        assert many["fli"][i] == one.fli
 
 
 def test_bad_input_is_refused():
