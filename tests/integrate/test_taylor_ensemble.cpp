@@ -158,7 +158,8 @@ TEST(TaylorEnsemble, BitIdenticalWhereRunsStopEarly) {
 TEST(TaylorEnsemble, BitIdenticalWhereSeriesAreNotFinite) {
   // m of 1e160 among ordinary points: the products of the recurrences overflow, the series is not
   // finite, every trial from the given first step on is rejected and retried 5× shorter until the
-  // step underflows; the other lanes carry on. The rejections and the outcome are the scalar driver's.
+  // step underflows; the other lanes carry on. The rejections and the outcome are the scalar
+  // driver's.
   Runs r = random_runs(7, true, 1e-10, 77);
   r.states[2].m *= 1e160;
   r.states[5].m *= 1e160;
