@@ -35,7 +35,7 @@ void write_csv(std::ostream& os, const io::OrbitScenario& sc,
                const std::vector<OrbitCrossing>& cs) {
   os << "orbit,t," << (sc.circular() ? "" : "nu,")
      << "p,q,r,gamma1,gamma2,gamma3,normal1,normal2,normal3,psi,theta,phi,"
-        "omega_rel1,omega_rel2,omega_rel3\n";
+        "omega_rel1,omega_rel2,omega_rel3,roll,pitch,yaw\n";
   for (const OrbitCrossing& c : cs) {
     const Row r = row(sc, c);
     os << c.orbit << ',' << format_number(r.t);
@@ -48,6 +48,7 @@ void write_csv(std::ostream& os, const io::OrbitScenario& sc,
     put(c.x.normal);
     put(r.coords.euler_321);
     put(r.coords.omega_relative);
+    put(roll_pitch_yaw(lvlh_to_body(c.x)));
     os << '\n';
   }
 }
