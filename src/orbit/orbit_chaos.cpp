@@ -136,7 +136,13 @@ class Renormalising {
   template <class M>
   bool try_step(const M& model, TangentState<K>& x, double& t, double& dt) {
     if (!inner_.try_step(model, x, t, dt)) return false;
-    if (on_) x.growth = renormalise<K>(x.V);
+    if (on_) {
+      // The exact tangent flow keeps the vectors on the leaf; the step's error does not, and a
+      // component across it (exponent 0) would swamp the contracting directions: projected back.
+      const OrbitLeafBasis Q = leaf_basis(x.x);
+      x.V = Q * (Q.transpose() * x.V);
+      x.growth = renormalise<K>(x.V);
+    }
     return true;
   }
 
