@@ -30,8 +30,9 @@ void write_row(std::ostream& os, const phase::ChaosSample& s) {
 
 int orbit_chaos_command(const OrbitChaosArgs& a) {
   if (a.split) {
-    throw InputError("--split: the free body's split applies to the fixed-point model, not to an "
-                     "orbit scenario");
+    throw InputError(
+        "--split: the free body's split applies to the fixed-point model, not to an "
+        "orbit scenario");
   }
   if (a.step) {
     throw InputError("--step: chaos on an orbit runs an embedded pair (--tol), not a fixed step");
@@ -95,8 +96,8 @@ int orbit_chaos_command(const OrbitChaosArgs& a) {
       std::cout << '\n';
     }
     std::cout << "t = " << format_number(r.t) << " on "
-              << (sc.circular() ? "a circular" : "an elliptic") << " orbit, method " << st.method.name
-              << ", tol " << format_number(st.method.abs_tol) << ", outcome "
+              << (sc.circular() ? "a circular" : "an elliptic") << " orbit, method "
+              << st.method.name << ", tol " << format_number(st.method.abs_tol) << ", outcome "
               << to_string(r.outcome.status) << '\n';
     if (a.out) std::cout << "history written to " << *a.out << '\n';
   }

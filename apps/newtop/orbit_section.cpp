@@ -90,8 +90,8 @@ int orbit_section_command(const OrbitSectionArgs& a) {
     if (const auto* c = std::get_if<CircularOrbit>(&sc.orbit)) {
       r = orbit_section(CircularOrbitModel(sc.body, *c), sc.initial, request);
     } else {
-      r = orbit_section(EllipticOrbitModel(sc.body, std::get<EllipticOrbit>(sc.orbit)),
-                        sc.initial, request);
+      r = orbit_section(EllipticOrbitModel(sc.body, std::get<EllipticOrbit>(sc.orbit)), sc.initial,
+                        request);
     }
   } catch (const Interrupted& e) {
     // The independent variable: t on a circular orbit, the true anomaly on an ellipse.

@@ -218,9 +218,8 @@ int run(const SectionArgs& a) {
                      {"empty", empty}};
     }
     if (!request.t_end) {
-      j["cap"] = {{"max_steps", request.options.max_steps},
-                  {"hit", capped > 0},
-                  {"orbits_capped", capped}};
+      j["cap"] = {
+          {"max_steps", request.options.max_steps}, {"hit", capped > 0}, {"orbits_capped", capped}};
     }
     print_json(std::cout, j);
   } else {
@@ -228,8 +227,8 @@ int run(const SectionArgs& a) {
               << "): " << crossings.size() << " crossings of " << starts.size()
               << " orbit(s), stopped by " << stopped_by
               << "\nmax |g| at the crossings = " << format_number(residual) << " ("
-              << format_number(relative) << " of the size of its terms)\nmethod " << request.method.name
-              << ", outcome " << to_string(status) << '\n';
+              << format_number(relative) << " of the size of its terms)\nmethod "
+              << request.method.name << ", outcome " << to_string(status) << '\n';
     if (levels) print_seeded(std::cout, *levels, starts.size(), *a.orbits);
     if (!request.t_end) {
       print_cap(std::cout, request.options.max_steps, request.max_crossings, capped);

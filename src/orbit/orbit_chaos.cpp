@@ -116,7 +116,8 @@ std::array<double, 6> renormalise(Eigen::Matrix<double, 9, K>& V) {
     for (int i = 0; i < K; ++i) {
       const double r = qr.matrixQR()(i, i);
       g[i] = std::log(std::abs(r));
-      V.col(i) = r < 0 ? Eigen::Matrix<double, 9, 1>(-Q.col(i)) : Eigen::Matrix<double, 9, 1>(Q.col(i));
+      V.col(i) =
+          r < 0 ? Eigen::Matrix<double, 9, 1>(-Q.col(i)) : Eigen::Matrix<double, 9, 1>(Q.col(i));
     }
   }
   return g;
@@ -159,7 +160,7 @@ decltype(auto) with_pair(const MethodSettings& m, bool renormalise_on, Fn&& fn) 
   using Y = TangentNumbers<K>;
   if (m.name == "dopri5") {
     Renormalising<EmbeddedRkOn<odeint::runge_kutta_dopri5<Y>, 5>, K> s(m.abs_tol, m.rel_tol,
-                                                                        renormalise_on);
+                                                                       renormalise_on);
     return fn(s);
   }
   if (m.name == "dop853") {
@@ -167,7 +168,7 @@ decltype(auto) with_pair(const MethodSettings& m, bool renormalise_on, Fn&& fn) 
     return fn(s);
   }
   Renormalising<EmbeddedRkOn<odeint::runge_kutta_fehlberg78<Y>, 8>, K> s(m.abs_tol, m.rel_tol,
-                                                                          renormalise_on);
+                                                                         renormalise_on);
   return fn(s);
 }
 
@@ -246,8 +247,7 @@ Eigen::Matrix<double, 9, 9> tangent_map(const MethodSettings& method, const M& m
 
 void check_orbit_chaos_settings(const OrbitChaosSettings& settings) {
   check_pair(settings.method);
-  if (!std::isfinite(settings.t0) || !std::isfinite(settings.t1) ||
-      !(settings.t1 > settings.t0)) {
+  if (!std::isfinite(settings.t0) || !std::isfinite(settings.t1) || !(settings.t1 > settings.t0)) {
     throw InputError("t_end: chaos on an orbit expected a finite t_end > t0 = " +
                      format_number(settings.t0) + ", found " + format_number(settings.t1));
   }

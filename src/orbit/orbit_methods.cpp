@@ -166,8 +166,8 @@ void validate_orbit_method(const MethodSettings& settings) {
     names += std::string(t.name) + ", ";
   }
   if (!is_orbit_adaptive_method(settings.name)) {
-    throw InputError("method: expected one of " + names + "rkf78, dopri5, dop853 on an orbit, found '" +
-                     settings.name + "'");
+    throw InputError("method: expected one of " + names +
+                     "rkf78, dopri5, dop853 on an orbit, found '" + settings.name + "'");
   }
   if (!(settings.abs_tol > 0) || !(settings.rel_tol > 0)) {
     throw InputError("tol: method " + settings.name + " needs tolerances > 0, found " +

@@ -174,12 +174,11 @@ TEST(OptionsOnEveryModel, ChaosAndDop853RunOnOrbits) {
 // Section CSV on an orbit: roll, pitch, yaw (LVLH) beside the orbital coordinates, equal to the
 // JSON's roll_pitch_yaw of each crossing.
 TEST(OptionsOnEveryModel, OrbitSectionCsvHasRollPitchYaw) {
-  const std::string csv =
-      newtop::test::scratch_path("newtop_options", "section_rpy.csv").string();
-  const CliResult r = newtop::test::run_newtop(
-      "section " + newtop::test::example_path("satellite_700km.toml") +
-          " --surface gamma1=0 --crossings 3 --out " + csv + " --json",
-      newtop::test::Stderr::separate);
+  const std::string csv = newtop::test::scratch_path("newtop_options", "section_rpy.csv").string();
+  const CliResult r =
+      newtop::test::run_newtop("section " + newtop::test::example_path("satellite_700km.toml") +
+                                   " --surface gamma1=0 --crossings 3 --out " + csv + " --json",
+                               newtop::test::Stderr::separate);
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   std::istringstream in(newtop::test::read_text(csv));

@@ -232,7 +232,8 @@ TEST(OrbitSection, RequestFormAgreesWithThePositionalRunAndSaysNoCrossing) {
   ASSERT_FALSE(r.crossings.empty());
   EXPECT_EQ(r.status, phase::SectionStatus::t_end);
   ASSERT_EQ(r.crossings.size(), s.crossings.size());
-  for (std::size_t i = 0; i < r.crossings.size(); ++i) EXPECT_EQ(r.crossings[i].t, s.crossings[i].t);
+  for (std::size_t i = 0; i < r.crossings.size(); ++i)
+    EXPECT_EQ(r.crossings[i].t, s.crossings[i].t);
   q.surface = phase::parse_surface("normal3 = 0.5");  // n stays e_z: never met
   EXPECT_EQ(orbit_section(model, x0, q).status, phase::SectionStatus::no_crossing);
   q.t_end.reset();

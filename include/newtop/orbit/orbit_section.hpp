@@ -58,7 +58,7 @@ phase::SectionRun orbit_section(const MethodSettings& method, const EllipticOrbi
 struct OrbitSectionResult {
   phase::SectionStatus status = phase::SectionStatus::no_crossing;
   Status outcome = Status::finished;  ///< how the integration ended
-  double reached = 0.0;  ///< the run's variable reached (t, or ν on an ellipse)
+  double reached = 0.0;               ///< the run's variable reached (t, or ν on an ellipse)
   std::int64_t steps = 0, rejected = 0;
   std::vector<OrbitCrossing> crossings;  ///< t is the run's variable (ν on an ellipse)
   OrbitSectionDrift drift;

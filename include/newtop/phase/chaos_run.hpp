@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <type_traits>
 
 #include "newtop/integrate/driver.hpp"
@@ -60,7 +61,9 @@ class TangentFlowStepper {
   /// Adaptive when S has try_step (then the driver runs its adaptive loop, else the fixed one).
   template <Field F>
   static constexpr bool kAdaptive = requires(S s, const BasicModel<F>& m, State& x, Tangent& V,
-                                             double& t) { s.try_step(m, x, V, t, t); };
+                                             double& t) {
+    s.try_step(m, x, V, t, t);
+  };
 
  public:
   explicit TangentFlowStepper(S& s) : s_(s) {}
@@ -70,8 +73,8 @@ class TangentFlowStepper {
     s_.step(*f.model, p.x, p.V, h);
   }
   template <Field F>
-  requires kAdaptive<F> bool try_step(const TangentFlow<F>& f, TangentPoint& p, double& t,
-                                      double& dt) {
+  requires kAdaptive<F>
+  bool try_step(const TangentFlow<F>& f, TangentPoint& p, double& t, double& dt) {
     return s_.try_step(*f.model, p.x, p.V, t, dt);
   }
   template <Field F>
@@ -98,7 +101,8 @@ Outcome run_tangent(S& stepper, const BasicModel<F>& model, const State& x, cons
     }
     observer(t, p.x, p.V);
   };
-  const TangentOutcome o = integrate(s, TangentFlow<F>{&model}, TangentPoint{x, V}, t0, t1, opt, obs);
+  const TangentOutcome o =
+      integrate(s, TangentFlow<F>{&model}, TangentPoint{x, V}, t0, t1, opt, obs);
   Outcome out;
   out.status = o.status;
   out.t = o.t;
@@ -166,37 +170,90 @@ ChaosResult chaos_run(const MethodSettings& method, const BasicModel<F>& model, 
   });
 }
 
+/// A state and its companion, advanced together (two_trajectory_lyapunov); the companion is
+/// mutable so that the driver's observer pulls it back in place.
+struct StatePair {
+  State x;
+  mutable State y;
+};
+
+struct StatePairOutcome {
+  Status status = Status::finished;
+  double t = 0.0;
+  StatePair state;
+  std::int64_t steps = 0;
+  std::int64_t rejected = 0;
+  double last_step = 0.0;
+};
+
+inline void check_state(const StatePair& p) { newtop::check_state(p.x); }
+inline bool is_finite(const StatePair& p) {
+  return newtop::is_finite(p.x) && newtop::is_finite(p.y);
+}
+
+/// The flow of a BasicModel<F> on a pair of states, as a model of the driver.
+template <Field F>
+struct PairFlow {
+  using state_type = StatePair;
+  const BasicModel<F>* model;
+};
+
+/// A plain stepper's one-step map on both states of a pair.
+template <class S>
+class PairStepper {
+ public:
+  explicit PairStepper(S& s) : map1_(s), map2_(s), order_(s.order()) {}
+  int order() const { return order_; }
+  template <Field F>
+  void step(const PairFlow<F>& f, StatePair& p, double h) {
+    p.x = map1_(*f.model, p.x, h);
+    p.y = map2_(*f.model, p.y, h);
+  }
+
+ private:
+  OneStepMap<S> map1_, map2_;
+  int order_;
+};
+
+}  // namespace newtop::phase
+
+namespace newtop {
+template <>
+struct OutcomeFor<phase::StatePair> {
+  using type = phase::StatePairOutcome;
+};
+}  // namespace newtop
+
+namespace newtop::phase {
+
 /// Benettin's two-trajectory estimate of λ_max: a companion started at distance d0 along
 /// initial_tangent(1) (in the max norm of the state), both advanced by the plain stepper of the
-/// method, the companion pulled back to distance d0 every `renorm` steps; Σ ln(d/d0)/(t − t0).
+/// method in the engine's fixed-step driver, the companion pulled back to distance d0 every
+/// `renorm` steps and at the end; Σ ln(d/d0)/(t − t0).
 template <Field F>
 double two_trajectory_lyapunov(const MethodSettings& method, const BasicModel<F>& model,
                                const State& x0, double t0, double t1, double d0 = 1e-8,
                                int renorm = 10) {
-  const std::int64_t n = fixed_step_count(t0, t1, method.step);
-  const double h = (t1 - t0) / static_cast<double>(n);
+  IntegrateOptions opt;
+  opt.step = method.step;
+  opt.max_steps = std::numeric_limits<std::int64_t>::max();
   return with_stepper(method, [&](auto& s) {
     using S = std::decay_t<decltype(s)>;
-    OneStepMap<S> map1(s), map2(s);
+    PairStepper<S> pair(s);
     const Tangent v = initial_tangent(1);
-    auto sub = [](const State& a, const State& b) {
-      Eigen::Matrix<double, 6, 1> d;
-      d << a.m - b.m, a.gamma - b.gamma;
-      return d;
-    };
-    State x = x0, y{x0.m + d0 * v.col(0).head<3>(), x0.gamma + d0 * v.col(0).tail<3>()};
+    const StatePair p0{x0, {x0.m + d0 * v.col(0).head<3>(), x0.gamma + d0 * v.col(0).tail<3>()}};
     double sum = 0;
-    for (std::int64_t i = 1; i <= n; ++i) {
-      x = map1(model, x, h);
-      y = map2(model, y, h);
-      if (i % renorm == 0 || i == n) {
-        const Eigen::Matrix<double, 6, 1> d = sub(y, x);
-        const double dn = d.norm();
-        sum += std::log(dn / d0);
-        const Eigen::Matrix<double, 6, 1> e = (d0 / dn) * d;
-        y = {x.m + e.head<3>(), x.gamma + e.tail<3>()};
-      }
-    }
+    std::int64_t i = -1;  // the driver's first call is the start
+    auto pull_back = [&](double t, const StatePair& p) {
+      if (++i == 0 || (i % renorm != 0 && t != t1)) return;
+      Eigen::Matrix<double, 6, 1> d;
+      d << p.y.m - p.x.m, p.y.gamma - p.x.gamma;
+      const double dn = d.norm();
+      sum += std::log(dn / d0);
+      const Eigen::Matrix<double, 6, 1> e = (d0 / dn) * d;
+      p.y = {p.x.m + e.head<3>(), p.x.gamma + e.tail<3>()};
+    };
+    integrate(pair, PairFlow<F>{&model}, p0, t0, t1, opt, pull_back);
     return sum / (t1 - t0);
   });
 }
