@@ -12,7 +12,9 @@
 #include "integration_options.hpp"
 #include "interrupt.hpp"
 #include "newtop/io/json.hpp"
+#include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
+#include "orbit_commands.hpp"
 #include "summary.hpp"
 
 namespace newtop::app {
@@ -39,6 +41,11 @@ void write_row(std::ostream& os, const phase::ChaosSample& s) {
 }
 
 int run(const ChaosArgs& a) {
+  if (io::is_orbit_scenario(a.scenario)) {
+    const IntegrationArgs& i = a.integration;
+    return orbit_chaos_command(
+        {a.scenario, i.t_end, i.step, i.tol, i.method, i.split, a.out, a.spectrum, a.json});
+  }
   const io::Scenario sc = load_body_scenario(a.scenario);
   const RunSettings run = resolve_run(sc, a.integration);
   phase::check_tangent_method(run.method);

@@ -39,6 +39,16 @@ struct OrbitSectionArgs {
 };
 int orbit_section_command(const OrbitSectionArgs& a);
 
+/// newtop chaos on an orbit scenario (docs/orbit.md §13).
+struct OrbitChaosArgs {
+  std::string scenario;
+  std::optional<double> t_end, step, tol;
+  std::optional<std::string> method, split, out;
+  bool spectrum = false;
+  bool json = false;
+};
+int orbit_chaos_command(const OrbitChaosArgs& a);
+
 int orbit_simulate(const std::string& path, const OrbitSimulateArgs& a);
 int orbit_integrals(const std::string& path, bool json);
 int orbit_equilibria(const std::string& path, bool json);

@@ -35,7 +35,7 @@ void write_csv(std::ostream& os, const io::OrbitScenario& sc,
                const std::vector<OrbitCrossing>& cs) {
   os << "orbit,t," << (sc.circular() ? "" : "nu,")
      << "p,q,r,gamma1,gamma2,gamma3,normal1,normal2,normal3,psi,theta,phi,"
-        "omega_rel1,omega_rel2,omega_rel3\n";
+        "omega_rel1,omega_rel2,omega_rel3,roll,pitch,yaw\n";
   for (const OrbitCrossing& c : cs) {
     const Row r = row(sc, c);
     os << c.orbit << ',' << format_number(r.t);
@@ -48,6 +48,7 @@ void write_csv(std::ostream& os, const io::OrbitScenario& sc,
     put(c.x.normal);
     put(r.coords.euler_321);
     put(r.coords.omega_relative);
+    put(roll_pitch_yaw(lvlh_to_body(c.x)));
     os << '\n';
   }
 }
@@ -70,27 +71,27 @@ int orbit_section_command(const OrbitSectionArgs& a) {
   const phase::Direction direction = phase::parse_direction(a.direction);
   const io::OrbitScenario sc = io::load_orbit_scenario(a.scenario);
   warn_units(sc);
-  const MethodSettings method = orbit_method(sc, a.method, a.step, a.tol);
-  const double t0 = sc.integrate.t0, t_end = orbit_t_end(sc, a.t_end);
-  const std::int64_t max_steps = sc.integrate.max_steps.value_or(100'000'000);
-  const phase::SurfaceFunction g(surface, sc.body, /*with_normal=*/true);
+  phase::SectionRequest request;
+  request.method = orbit_method(sc, a.method, a.step, a.tol);
+  request.surface = surface;
+  request.direction = direction;
+  request.max_crossings = a.crossings;
+  request.t0 = sc.integrate.t0;
+  request.t_end = orbit_t_end(sc, a.t_end);
+  request.options.max_steps = sc.integrate.max_steps.value_or(100'000'000);
+  request.on_step = throw_if_interrupted;
+  const phase::SurfaceFunction g(surface, sc.body, /*with_normal=*/true);  // checks the surface
   std::unique_ptr<io::AtomicFile> file;
   if (a.out) file = std::make_unique<io::AtomicFile>(*a.out);
 
   const InterruptGuard guard;
-  const phase::SectionSettings settings{direction, a.crossings, false};
-  std::vector<OrbitCrossing> crossings;
-  OrbitSectionDrift drift;
-  phase::SectionRun r;
+  OrbitSectionResult r;
   try {
     if (const auto* c = std::get_if<CircularOrbit>(&sc.orbit)) {
-      r = orbit_section(method, CircularOrbitModel(sc.body, *c), g, settings, 0, sc.initial, t0,
-                        t_end, max_steps, crossings, drift, throw_if_interrupted);
+      r = orbit_section(CircularOrbitModel(sc.body, *c), sc.initial, request);
     } else {
-      const auto& e = std::get<EllipticOrbit>(sc.orbit);
-      r = orbit_section(method, EllipticOrbitModel(sc.body, e), g, settings, 0, sc.initial,
-                        e.true_anomaly0, true_anomaly_at(e, t_end - t0), max_steps, crossings,
-                        drift, throw_if_interrupted);
+      r = orbit_section(EllipticOrbitModel(sc.body, std::get<EllipticOrbit>(sc.orbit)), sc.initial,
+                        request);
     }
   } catch (const Interrupted& e) {
     // The independent variable: t on a circular orbit, the true anomaly on an ellipse.
@@ -101,11 +102,14 @@ int orbit_section_command(const OrbitSectionArgs& a) {
     return 128 + e.signal;
   }
   if (file) {
-    write_csv(file->stream(), sc, crossings);
+    write_csv(file->stream(), sc, r.crossings);
     file->commit();
   }
-  const Status status = r.outcome.status;
-  const std::string stopped_by = r.by_crossings ? "crossings" : "t_end";
+  const MethodSettings& method = request.method;
+  const std::vector<OrbitCrossing>& crossings = r.crossings;
+  const Status status = r.outcome;
+  const std::string stopped_by =
+      r.status == phase::SectionStatus::crossings ? "crossings" : "t_end";
   if (a.json) {
     io::Json j;
     j["surface"] = surface.text;
@@ -131,7 +135,7 @@ int orbit_section_command(const OrbitSectionArgs& a) {
     j["count"] = crossings.size();
     j["stopped_by"] = stopped_by;
     j["max_surface_residual"] = r.max_residual;
-    j["integrals_drift"] = drift_json(drift);
+    j["integrals_drift"] = drift_json(r.drift);
     j["method"] = method.name;
     j["outcome"] = to_string(status);
     j["orbit"] = sc.circular() ? "circular" : "elliptic";

@@ -78,34 +78,29 @@ void write_csv(std::ostream& os, const std::vector<phase::Crossing>& cs, const B
 constexpr std::int64_t kCrossingsStepCap = 1'000'000;
 constexpr std::int64_t kDefaultCrossings = 1000;
 
-struct SectionSpan {
-  RunSettings run;
-  bool capped = false;  ///< no t_end: the run goes on until the crossings or the step cap
-};
-
-/// The run of each orbit: to t_end as `simulate` resolves it; with --crossings and no t_end
-/// anywhere, forward until the crossings, at most max_steps steps (kCrossingsStepCap unless
-/// [integrate] max_steps): a fixed-step run is given twice that span, an adaptive one a span of
-/// 10^12 whose step-underflow floor stays that of a run of span 1 (10^-12 of the time unit).
-SectionSpan section_span(const io::Scenario& sc, const SectionArgs& a) {
+/// The request of each orbit: method, t0 and t_end as `simulate` resolves them; with --crossings
+/// and no t_end anywhere, no t_end (the run stops at the crossings or at max_steps steps:
+/// kCrossingsStepCap unless [integrate] max_steps).
+phase::SectionRequest section_request(const io::Scenario& sc, const SectionArgs& a,
+                                      const phase::Surface& surface, phase::Direction direction) {
+  phase::SectionRequest q;
+  q.surface = surface;
+  q.direction = direction;
+  q.max_crossings = a.crossings.value_or(kDefaultCrossings);
+  q.start_on_surface = a.orbits.has_value();
+  q.on_step = throw_if_interrupted;
   if (!a.crossings || a.integration.t_end || sc.integrate.t_end) {
-    return {resolve_run(sc, a.integration), false};
-  }
-  constexpr double kAdaptiveSpan = 1e12;
-  SectionSpan s;
-  s.capped = true;
-  RunSettings& r = s.run;
-  r.method = io::resolve_method(sc, a.integration.overrides());
-  r.t0 = sc.integrate.t0;
-  r.options.max_steps = sc.integrate.max_steps.value_or(kCrossingsStepCap);
-  if (method_info(r.method.name).kind == MethodKind::adaptive) {
-    r.t_end = r.t0 + kAdaptiveSpan;
-    r.options.min_step_factor /= kAdaptiveSpan;
+    const RunSettings run = resolve_run(sc, a.integration);
+    q.method = run.method;
+    q.t0 = run.t0;
+    q.t_end = run.t_end;
+    q.options = run.options;
   } else {
-    r.t_end = r.t0 + 2.0 * static_cast<double>(r.options.max_steps) * r.method.step;
+    q.method = io::resolve_method(sc, a.integration.overrides());
+    q.t0 = sc.integrate.t0;
+    q.options.max_steps = sc.integrate.max_steps.value_or(kCrossingsStepCap);
   }
-  check_time_span(r.t0, r.t_end);
-  return s;
+  return q;
 }
 
 /// The seeded orbits: how many, and why fewer than asked.
@@ -144,8 +139,7 @@ int run(const SectionArgs& a) {
   }
   phase::require_body_surface(surface);
   const io::Scenario sc = load_body_scenario(a.scenario);
-  const SectionSpan span = section_span(sc, a);
-  const RunSettings& run = span.run;
+  phase::SectionRequest request = section_request(sc, a, surface, direction);
   std::optional<phase::Levels> levels;
   std::vector<State> starts{sc.initial};
   if (a.orbits) {
@@ -157,8 +151,6 @@ int run(const SectionArgs& a) {
   if (a.out) file = std::make_unique<io::AtomicFile>(*a.out, sc.input_files);
 
   const InterruptGuard guard;
-  phase::SectionSettings settings{direction, a.crossings.value_or(kDefaultCrossings),
-                                  a.orbits.has_value()};
   std::vector<phase::Crossing> crossings;
   phase::IntegralsDrift drift;
   bool all_by_crossings = true;
@@ -166,15 +158,14 @@ int run(const SectionArgs& a) {
   Status status = Status::finished;
   double residual = 0.0, relative = 0.0;
   try {
-    const phase::SurfaceFunction g(surface, sc.model.body());
     for (std::size_t k = 0; k < starts.size(); ++k) {
-      phase::IntegralsDrift orbit_drift;  // each orbit against its own start
-      const phase::SectionRun r = phase::section_orbit(
-          run.method, sc.model, g, settings, static_cast<int>(k), starts[k], run.t0, run.t_end,
-          run.options, crossings, orbit_drift, throw_if_interrupted);
-      drift.merge(orbit_drift);
-      all_by_crossings = all_by_crossings && r.by_crossings;
-      if (span.capped && !r.by_crossings) ++capped;
+      request.orbit = static_cast<int>(k);
+      const phase::SectionResult r = phase::section(sc.model, starts[k], request);
+      crossings.insert(crossings.end(), r.crossings.begin(), r.crossings.end());
+      drift.merge(r.drift);  // each orbit against its own start
+      const bool by_crossings = r.status == phase::SectionStatus::crossings;
+      all_by_crossings = all_by_crossings && by_crossings;
+      if (!request.t_end && !by_crossings) ++capped;
       if (r.outcome.status != Status::finished) status = r.outcome.status;
       residual = std::max(residual, r.max_residual);
       relative = std::max(relative, r.max_relative);
@@ -217,7 +208,7 @@ int run(const SectionArgs& a) {
     j["stopped_by"] = stopped_by;
     j["max_surface_residual"] = residual;
     j["integrals_drift"] = drift.started ? io::to_json(drift.max_drift) : io::Json::object();
-    j["method"] = run.method.name;
+    j["method"] = request.method.name;
     j["outcome"] = to_string(status);
     if (levels) {
       j["levels"] = {{"energy", levels->energy},
@@ -226,9 +217,9 @@ int run(const SectionArgs& a) {
                      {"orbits_asked", *a.orbits},
                      {"empty", empty}};
     }
-    if (span.capped) {
+    if (!request.t_end) {
       j["cap"] = {
-          {"max_steps", run.options.max_steps}, {"hit", capped > 0}, {"orbits_capped", capped}};
+          {"max_steps", request.options.max_steps}, {"hit", capped > 0}, {"orbits_capped", capped}};
     }
     print_json(std::cout, j);
   } else {
@@ -236,10 +227,12 @@ int run(const SectionArgs& a) {
               << "): " << crossings.size() << " crossings of " << starts.size()
               << " orbit(s), stopped by " << stopped_by
               << "\nmax |g| at the crossings = " << format_number(residual) << " ("
-              << format_number(relative) << " of the size of its terms)\nmethod " << run.method.name
-              << ", outcome " << to_string(status) << '\n';
+              << format_number(relative) << " of the size of its terms)\nmethod "
+              << request.method.name << ", outcome " << to_string(status) << '\n';
     if (levels) print_seeded(std::cout, *levels, starts.size(), *a.orbits);
-    if (span.capped) print_cap(std::cout, run.options.max_steps, settings.max_crossings, capped);
+    if (!request.t_end) {
+      print_cap(std::cout, request.options.max_steps, request.max_crossings, capped);
+    }
     if (a.out) std::cout << "crossings written to " << *a.out << '\n';
   }
   return status == Status::finished ? kExitOk : kExitIncomplete;

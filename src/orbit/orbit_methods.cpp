@@ -2,10 +2,12 @@
 // stepper and the engine's embedded Runge–Kutta pairs on the orbit state, every run through the
 // engine's driver (integrate/driver.hpp) and sampled output (integrate/sampled.hpp).
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
 
+#include "newtop/integrate/dop853.hpp"
 #include "newtop/integrate/runge_kutta.hpp"
 #include "newtop/integrate/sampled.hpp"
 #include "newtop/orbit/orbit_integrate.hpp"
@@ -55,8 +57,9 @@ namespace {
 namespace odeint = boost::numeric::odeint;
 using OrbitRkf78 = EmbeddedRkOn<odeint::runge_kutta_fehlberg78<OrbitOdeState>, 8>;
 using OrbitDopri5 = EmbeddedRkOn<odeint::runge_kutta_dopri5<OrbitOdeState>, 5>;
+using OrbitDop853 = Dop853On<OrbitOdeState>;
 
-constexpr std::array<std::string_view, 2> kAdaptive{"rkf78", "dopri5"};
+constexpr std::array<std::string_view, 3> kAdaptive{"rkf78", "dopri5", "dop853"};
 
 /// Calls fn(stepper) with a stepper of the named method (settings validated).
 template <class Fn>
@@ -68,6 +71,10 @@ decltype(auto) with_orbit_stepper(const MethodSettings& settings, Fn&& fn) {
   }
   if (settings.name == "dopri5") {
     OrbitDopri5 s(settings.abs_tol, settings.rel_tol);
+    return fn(s);
+  }
+  if (settings.name == "dop853") {
+    OrbitDop853 s(settings.abs_tol, settings.rel_tol);
     return fn(s);
   }
   const OrbitSplittingStepper s(composition_table(settings.name));
@@ -126,6 +133,10 @@ OrbitOutcome run_adaptive(const M& model, const OrbitState& x, double a, double 
 template <class M>
 OrbitState one_step(std::string_view name, const M& model, const OrbitState& x, double t,
                     double h) {
+  if (name == "dop853") {
+    // The tolerances play no part in the formula.
+    return OrbitDop853(1.0, 1.0).formula_step(model, x, t, h);
+  }
   OrbitOdeState y = to_orbit_ode(x);
   const OrbitOdeSystem<M> sys{&model};
   if (name == "dopri5") {
@@ -139,7 +150,7 @@ OrbitState one_step(std::string_view name, const M& model, const OrbitState& x, 
 }  // namespace
 
 bool is_orbit_adaptive_method(std::string_view name) {
-  return name == kAdaptive[0] || name == kAdaptive[1];
+  return std::find(kAdaptive.begin(), kAdaptive.end(), name) != kAdaptive.end();
 }
 
 void validate_orbit_method(const MethodSettings& settings) {
@@ -155,8 +166,8 @@ void validate_orbit_method(const MethodSettings& settings) {
     names += std::string(t.name) + ", ";
   }
   if (!is_orbit_adaptive_method(settings.name)) {
-    throw InputError("method: expected one of " + names + "rkf78, dopri5 on an orbit, found '" +
-                     settings.name + "'");
+    throw InputError("method: expected one of " + names +
+                     "rkf78, dopri5, dop853 on an orbit, found '" + settings.name + "'");
   }
   if (!(settings.abs_tol > 0) || !(settings.rel_tol > 0)) {
     throw InputError("tol: method " + settings.name + " needs tolerances > 0, found " +

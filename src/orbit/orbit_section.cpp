@@ -143,4 +143,60 @@ OrbitFrameCoords orbit_frame_coords(const Body& body, const OrbitState& x, doubl
   return {euler_321(Quaternion(R)), relative_omega(body, x, orbit_rate)};
 }
 
+namespace {
+
+/// The end of the request's span (required on an orbit), checked.
+double orbit_span_end(const phase::SectionRequest& r) {
+  if (!r.t_end) {
+    throw InputError("t_end: a section on an orbit runs to t_end; none given");
+  }
+  check_time_span(r.t0, *r.t_end);
+  if (!(*r.t_end > r.t0)) {
+    throw InputError("t_end: expected a time after t0 = " + format_number(r.t0) + ", found " +
+                     format_number(*r.t_end));
+  }
+  return *r.t_end;
+}
+
+template <class M>
+OrbitSectionResult section_of(const M& model, const OrbitState& x0, const phase::SectionRequest& r,
+                              double a, double b) {
+  validate_orbit_method(r.method);
+  const phase::SurfaceFunction g(r.surface, model.body(), /*with_normal=*/true);
+  const phase::SectionSettings settings{r.direction, r.max_crossings, r.start_on_surface};
+  OrbitSectionResult res;
+  const phase::SectionRun run =
+      orbit_section(r.method, model, g, settings, r.orbit, x0, a, b, r.options.max_steps,
+                    res.crossings, res.drift, r.on_step);
+  res.outcome = run.outcome.status;
+  res.reached = run.outcome.t;
+  res.steps = run.outcome.steps;
+  res.rejected = run.outcome.rejected;
+  res.max_residual = run.max_residual;
+  res.max_relative = run.max_relative;
+  if (run.by_crossings) {
+    res.status = phase::SectionStatus::crossings;
+  } else if (run.outcome.status != Status::finished) {
+    res.status = phase::SectionStatus::failed;
+  } else {
+    res.status =
+        res.crossings.empty() ? phase::SectionStatus::no_crossing : phase::SectionStatus::t_end;
+  }
+  return res;
+}
+
+}  // namespace
+
+OrbitSectionResult orbit_section(const CircularOrbitModel& model, const OrbitState& x0,
+                                 const phase::SectionRequest& request) {
+  return section_of(model, x0, request, request.t0, orbit_span_end(request));
+}
+
+OrbitSectionResult orbit_section(const EllipticOrbitModel& model, const OrbitState& x0,
+                                 const phase::SectionRequest& request) {
+  const EllipticOrbit& e = model.orbit();
+  const double nu1 = true_anomaly_at(e, orbit_span_end(request) - request.t0);
+  return section_of(model, x0, request, e.true_anomaly0, nu1);
+}
+
 }  // namespace newtop

@@ -33,6 +33,15 @@ OrbitJacobian jacobian(const CircularOrbitModel& model, const OrbitState& s) {
   return J;
 }
 
+OrbitJacobian jacobian(const EllipticOrbitModel& model, const OrbitState& s, double nu) {
+  const CircularOrbitModel body_part(model.body(),
+                                     CircularOrbit::forced(0.0, lambda_at(model.orbit(), nu)));
+  OrbitJacobian J = time_per_anomaly(model.orbit(), nu) * jacobian(body_part, s);
+  J.block<3, 3>(3, 3) += cross_matrix(s.normal);
+  J.block<3, 3>(3, 6) -= cross_matrix(s.gamma);
+  return J;
+}
+
 OrbitLeafBasis leaf_basis(const OrbitState& s) {
   Eigen::Matrix<double, 9, 3> N = Eigen::Matrix<double, 9, 3>::Zero();
   N.block<3, 1>(3, 0) = s.gamma;

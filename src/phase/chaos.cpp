@@ -15,25 +15,35 @@ Tangent initial_tangent(int vectors) {
   return Tangent::Identity(6, vectors);
 }
 
-void ChaosIndicators::operator()(double t, Tangent& V) {
-  double delta = 0;  // ln(|δ_n|/|δ_{n−1}|) of the first vector
-  if (n_ == 1) {
+std::array<double, 6> renormalise_tangent(Tangent& V) {
+  std::array<double, 6> log_r{};
+  if (V.cols() == 1) {
     const double norm = V.col(0).norm();
-    delta = std::log(norm);
+    log_r[0] = std::log(norm);
     V.col(0) /= norm;
+    return log_r;
+  }
+  // Benettin: V = QR, the logs of |R_ii| accumulate, Q (signs fixed so that R_ii > 0) goes on.
+  const Eigen::HouseholderQR<Eigen::Matrix<double, 6, 6>> qr(V.leftCols(6));
+  const Eigen::Matrix<double, 6, 6> R = qr.matrixQR().triangularView<Eigen::Upper>();
+  Eigen::Matrix<double, 6, 6> Q = qr.householderQ();
+  for (int i = 0; i < 6; ++i) {
+    const double r = R(i, i);
+    log_r[i] = std::log(std::abs(r));
+    if (r < 0) Q.col(i) = -Q.col(i);
+  }
+  V = Q;
+  return log_r;
+}
+
+void ChaosIndicators::operator()(double t, Tangent& V) { accumulate(t, renormalise_tangent(V)); }
+
+void ChaosIndicators::accumulate(double t, const std::array<double, 6>& log_growth) {
+  const double delta = log_growth[0];  // ln(|δ_n|/|δ_{n−1}|) of the first vector
+  if (n_ == 1) {
     log_r_[0] += delta;
   } else {
-    // Benettin: V = QR, the logs of |R_ii| accumulate, Q (signs fixed so that R_ii > 0) goes on.
-    const Eigen::HouseholderQR<Eigen::Matrix<double, 6, 6>> qr(V.leftCols(6));
-    const Eigen::Matrix<double, 6, 6> R = qr.matrixQR().triangularView<Eigen::Upper>();
-    Eigen::Matrix<double, 6, 6> Q = qr.householderQ();
-    for (int i = 0; i < 6; ++i) {
-      const double r = R(i, i);
-      log_r_[i] += std::log(std::abs(r));
-      if (r < 0) Q.col(i) = -Q.col(i);
-    }
-    V = Q;
-    delta = std::log(std::abs(R(0, 0)));
+    for (int i = 0; i < 6; ++i) log_r_[i] += log_growth[i];
   }
   log_norm_ += delta;
   fli_ = std::max(fli_, log_norm_);

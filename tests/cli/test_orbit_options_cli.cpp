@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -141,6 +143,60 @@ TEST(OptionsOnEveryModel, EachOptionWorksOrIsRefusedInOneLine) {
       }
     }
   }
+}
+
+// The options that were refused on orbits and now work: chaos (every embedded pair, the spectrum)
+// and dop853 on simulate; taylor stays refused in one line naming the method.
+TEST(OptionsOnEveryModel, ChaosAndDop853RunOnOrbits) {
+  for (const Model& m : kModels) {
+    if (std::string(m.name) == "fixed point") continue;
+    SCOPED_TRACE(m.name);
+    const std::string ex = newtop::test::example_path(m.example) + " --t-end " + m.t_end;
+    for (const char* method : {"rkf78", "dopri5", "dop853"}) {
+      const CliResult r = newtop::test::run_newtop(
+          "chaos " + ex + " --method " + method + " --tol 1e-9 --spectrum --json",
+          newtop::test::Stderr::separate);
+      ASSERT_EQ(r.code, 0) << method << "\n" << r.err;
+      const auto j = nlohmann::json::parse(r.out);
+      EXPECT_EQ(j["method"], method);
+      EXPECT_EQ(j["spectrum"].size(), 6u);
+      EXPECT_TRUE(std::isfinite(j["megno"].get<double>()));
+    }
+    EXPECT_EQ(newtop::test::run_newtop("simulate " + ex + " --method dop853 --tol 1e-9").code, 0);
+    expect_works_or_refused("simulate " + ex + " --method taylor --tol 1e-9");
+    EXPECT_EQ(newtop::test::run_newtop("simulate " + ex + " --method taylor --tol 1e-9").code, 2);
+    // A splitting has no tangent map on an orbit: refused in one line.
+    expect_works_or_refused("chaos " + ex);
+    EXPECT_EQ(newtop::test::run_newtop("chaos " + ex).code, 2);
+  }
+}
+
+// Section CSV on an orbit: roll, pitch, yaw (LVLH) beside the orbital coordinates, equal to the
+// JSON's roll_pitch_yaw of each crossing.
+TEST(OptionsOnEveryModel, OrbitSectionCsvHasRollPitchYaw) {
+  const std::string csv = newtop::test::scratch_path("newtop_options", "section_rpy.csv").string();
+  const CliResult r =
+      newtop::test::run_newtop("section " + newtop::test::example_path("satellite_700km.toml") +
+                                   " --surface gamma1=0 --crossings 3 --out " + csv + " --json",
+                               newtop::test::Stderr::separate);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  std::istringstream in(newtop::test::read_text(csv));
+  std::string header;
+  std::getline(in, header);
+  EXPECT_NE(header.find(",roll,pitch,yaw"), std::string::npos) << header;
+  std::size_t k = 0;
+  for (std::string line; std::getline(in, line); ++k) {
+    std::vector<double> v;
+    std::istringstream cells(line);
+    for (std::string c; std::getline(cells, c, ',');) v.push_back(std::stod(c));
+    ASSERT_LT(k, j["crossings"].size());
+    const auto& rpy = j["crossings"][k]["coords"]["roll_pitch_yaw"];
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_EQ(v[v.size() - 3 + i], rpy[i].get<double>()) << "row " << k << " angle " << i;
+    }
+  }
+  EXPECT_EQ(k, 3u);
 }
 
 }  // namespace

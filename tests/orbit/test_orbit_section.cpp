@@ -214,5 +214,31 @@ TEST(OrbitSection, NormalComponentsParseAndAreRefusedOnABody) {
   EXPECT_THROW(phase::parse_surface("normal1 + normal1 = 0"), InputError);
 }
 
+// The request form on an orbit: the crossings of the positional run, a status, and on an ellipse
+// the span in time carried to anomalies.
+TEST(OrbitSection, RequestFormAgreesWithThePositionalRunAndSaysNoCrossing) {
+  const CircularOrbitModel model(Body::from_principal(kMoments, 1.0, Vec3::Zero()),
+                                 CircularOrbit::from_rate(1.0));
+  const OrbitState x0 = pitch_state(0.3, 0.0, 1.0);
+  MethodSettings m;
+  m.name = "splitting6";
+  m.step = 0.01;
+  phase::SectionRequest q;
+  q.method = m;
+  q.surface = phase::parse_surface("gamma2 = 0");
+  q.t_end = 20.0;
+  const OrbitSectionResult r = orbit_section(model, x0, q);
+  const Section s = section(m, model, "gamma2 = 0", x0, 0.0, 20.0);
+  ASSERT_FALSE(r.crossings.empty());
+  EXPECT_EQ(r.status, phase::SectionStatus::t_end);
+  ASSERT_EQ(r.crossings.size(), s.crossings.size());
+  for (std::size_t i = 0; i < r.crossings.size(); ++i)
+    EXPECT_EQ(r.crossings[i].t, s.crossings[i].t);
+  q.surface = phase::parse_surface("normal3 = 0.5");  // n stays e_z: never met
+  EXPECT_EQ(orbit_section(model, x0, q).status, phase::SectionStatus::no_crossing);
+  q.t_end.reset();
+  EXPECT_THROW(orbit_section(model, x0, q), InputError);
+}
+
 }  // namespace
 }  // namespace newtop

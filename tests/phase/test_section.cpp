@@ -205,3 +205,42 @@ TEST(Section, BackwardRunGivesTheForwardCrossingsReversed) {
 
 }  // namespace
 }  // namespace newtop
+
+namespace newtop {
+namespace {
+
+// The request form (phase::section): the same crossings as the positional run, and a status that
+// says why the run ended — crossings, t_end, or no crossing at all.
+TEST(SectionRequest, SaysWhyTheRunEndedAndAgreesWithThePositionalRun) {
+  const QuadraticModel model = test::brun_model();
+  const State x0 = test::generic_state(model);
+  phase::SectionRequest q;
+  q.method = fixed("splitting6", 0.02);
+  q.surface = phase::parse_surface("gamma3 = 5");  // |γ| = 1: never met
+  q.t_end = 30.0;
+  const phase::SectionResult none = phase::section(model, x0, q);
+  EXPECT_EQ(none.status, phase::SectionStatus::no_crossing);
+  EXPECT_TRUE(none.crossings.empty());
+  EXPECT_EQ(none.outcome.status, Status::finished);
+
+  q.surface = phase::parse_surface("gamma3 = 0");
+  const phase::SectionResult all = phase::section(model, x0, q);
+  const SectionResult positional = section(model, x0, "gamma3 = 0", q.method, 30.0);
+  ASSERT_FALSE(all.crossings.empty());
+  EXPECT_EQ(all.status, phase::SectionStatus::t_end);
+  ASSERT_EQ(all.crossings.size(), positional.crossings.size());
+  for (std::size_t i = 0; i < all.crossings.size(); ++i) {
+    EXPECT_EQ(all.crossings[i].t, positional.crossings[i].t);
+    EXPECT_EQ(all.crossings[i].x.gamma, positional.crossings[i].x.gamma);
+  }
+
+  q.max_crossings = 3;
+  q.t_end.reset();  // no end: until the crossings
+  const phase::SectionResult few = phase::section(model, x0, q);
+  EXPECT_EQ(few.status, phase::SectionStatus::crossings);
+  EXPECT_EQ(few.crossings.size(), 3u);
+  EXPECT_STREQ(phase::to_string(few.status), "crossings");
+}
+
+}  // namespace
+}  // namespace newtop

@@ -300,6 +300,45 @@ class Dop853Stepper : public detail::AdaptivePair<detail::Dop853OnModel<OdeState
   using Base::Base;
 };
 
+/// Dop853Core on the state of another model, whose odeint numbers Y OdeBinding<M, Y> binds (as
+/// EmbeddedRkOn for odeint's pairs): the same AdaptiveStepper and DenseStepper, error control and
+/// continuous extension, on any model that brings its right-hand side.
+template <class Y>
+class Dop853On {
+  template <class M>
+  using X = typename OdeBinding<M, Y>::state_type;
+  template <class M>
+  using Sys = typename OdeBinding<M, Y>::system;
+
+ public:
+  Dop853On(double abs_tol, double rel_tol) : core_(abs_tol, rel_tol) {}
+  int order() const { return detail::Dop853Core<Y>::kOrder; }
+
+  template <class M>
+  double initial_step(const M& model, const X<M>& x, double t0, double t1) {
+    return core_.initial_step(Sys<M>{&model}, OdeBinding<M, Y>::to(x), t0, t1 - t0);
+  }
+  template <class M>
+  bool try_step(const M& model, X<M>& x, double& t, double& dt) {
+    Y y = OdeBinding<M, Y>::to(x);
+    if (!core_.try_step(Sys<M>{&model}, y, t, dt)) return false;
+    x = OdeBinding<M, Y>::from(core_.point());
+    return true;
+  }
+  template <class M>
+  X<M> dense_state(const M& model, double t) {
+    return OdeBinding<M, Y>::from(core_.dense(Sys<M>{&model}, t));
+  }
+  /// One step of the order-8 formula from (t, x) by h without error control.
+  template <class M>
+  X<M> formula_step(const M& model, const X<M>& x, double t, double h) {
+    return OdeBinding<M, Y>::from(core_.step(Sys<M>{&model}, OdeBinding<M, Y>::to(x), t, h));
+  }
+
+ private:
+  detail::Dop853Core<Y> core_;
+};
+
 }  // namespace newtop
 
 #undef NEWTOP_DOP853_SCALAR

@@ -138,7 +138,8 @@ OrbitOutcome integrate_adaptive(const EllipticOrbitModel& model, OrbitState x, d
 /// (the right-hand side evaluated afresh at x). Event location lands on the solution with it.
 OrbitState rkf78_step(const CircularOrbitModel& model, const OrbitState& x, double t, double h);
 OrbitState rkf78_step(const EllipticOrbitModel& model, const OrbitState& x, double nu, double h);
-/// The same for any adaptive method of the orbit ("rkf78", "dopri5"): its propagated formula.
+/// The same for any adaptive method of the orbit ("rkf78", "dopri5", "dop853"): its propagated
+/// formula.
 OrbitState adaptive_formula_step(std::string_view name, const CircularOrbitModel& model,
                                  const OrbitState& x, double t, double h);
 OrbitState adaptive_formula_step(std::string_view name, const EllipticOrbitModel& model,
@@ -147,12 +148,12 @@ OrbitState adaptive_formula_step(std::string_view name, const EllipticOrbitModel
 /// The adaptive method on an orbit (the default there when only a tolerance is given).
 inline constexpr std::string_view kOrbitAdaptiveMethod = "rkf78";
 
-/// Whether a method name is one of the orbit's adaptive methods ("rkf78", "dopri5").
+/// Whether a method name is one of the orbit's adaptive methods ("rkf78", "dopri5", "dop853").
 bool is_orbit_adaptive_method(std::string_view name);
 
 /// Checks that a method runs on the orbit model: a splitting composition of composition_tables()
-/// (with settings.step > 0), "rkf78" or "dopri5" (with tolerances > 0); throws InputError naming
-/// `method` (listing the names that do) or the step or tolerance otherwise.
+/// (with settings.step > 0), "rkf78", "dopri5" or "dop853" (with tolerances > 0); throws InputError
+/// naming `method` (listing the names that do) or the step or tolerance otherwise.
 void validate_orbit_method(const MethodSettings& settings);
 
 /// Runs a method by name on a circular orbit from t0 to t1 (OrbitSplittingStepper with the named

@@ -54,6 +54,28 @@ phase::SectionRun orbit_section(const MethodSettings& method, const EllipticOrbi
                                 OrbitSectionDrift& drift,
                                 const std::function<void(double)>& on_step = {});
 
+/// The section of one start on an orbit.
+struct OrbitSectionResult {
+  phase::SectionStatus status = phase::SectionStatus::no_crossing;
+  Status outcome = Status::finished;  ///< how the integration ended
+  double reached = 0.0;               ///< the run's variable reached (t, or ν on an ellipse)
+  std::int64_t steps = 0, rejected = 0;
+  std::vector<OrbitCrossing> crossings;  ///< t is the run's variable (ν on an ellipse)
+  OrbitSectionDrift drift;
+  double max_residual = 0.0;  ///< max |g| at the crossings
+  double max_relative = 0.0;  ///< max |g| / scale of g's terms
+};
+
+/// The crossings of the trajectory from x0 with the request's surface (which may name the orbit
+/// normal), from request.t0 to request.t_end (required on an orbit; times, carried to true
+/// anomalies by Kepler's equation on an ellipse, where x0 is the state at ν0); the method is a
+/// splitting composition or an embedded pair (validate_orbit_method). InputError before any work
+/// for a missing or impossible span or a method that does not run on an orbit.
+OrbitSectionResult orbit_section(const CircularOrbitModel& model, const OrbitState& x0,
+                                 const phase::SectionRequest& request);
+OrbitSectionResult orbit_section(const EllipticOrbitModel& model, const OrbitState& x0,
+                                 const phase::SectionRequest& request);
+
 /// Coordinates of a crossing in the orbital frame (docs/orbit.md §10): the attitude of the
 /// principal axes relative to the orbital frame (e_r, e_t, e_n) as the 3-2-1 angles of the
 /// scenario files, R = R_n(ψ) R_t(θ) R_r(φ) (yaw ψ about e_n, pitch θ, roll φ), and the angular

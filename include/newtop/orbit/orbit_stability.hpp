@@ -21,6 +21,10 @@ using OrbitReduced = Eigen::Matrix<double, 6, 6>;
 ///  [ [n]× I⁻¹,        0,                   −[ω]× ]].
 OrbitJacobian jacobian(const CircularOrbitModel& model, const OrbitState& s);
 
+/// Jacobian of rhs(model, ·, ν) on an elliptic orbit: σ(ν) times the circular Jacobian with
+/// ω0 = 0 and λ(ν), plus the orbital rotation's [n]× in (γ, γ) and −[γ]× in (γ, n).
+OrbitJacobian jacobian(const EllipticOrbitModel& model, const OrbitState& s, double nu);
+
 /// Orthonormal basis of the tangent space of the leaf through s: the δx orthogonal to the
 /// gradients of γ·γ/2 (0, γ, 0), n·n/2 (0, 0, n) and γ·n (0, n, γ).
 OrbitLeafBasis leaf_basis(const OrbitState& s);

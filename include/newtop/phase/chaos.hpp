@@ -38,8 +38,13 @@ struct ChaosSample {
 class ChaosIndicators {
  public:
   ChaosIndicators(double t0, int vectors);
-  /// After a step from the previous time to t.
+  /// After a step from the previous time to t: renormalises V (renormalise_tangent) and
+  /// accumulates.
   void operator()(double t, Tangent& V);
+  /// After a step from the previous time to t whose tangent vectors grew by the factors
+  /// exp(log_growth[i]) (|δ| of the one vector, or Benettin's |R_ii|; only the first is read with
+  /// one vector): the accumulation alone, for tangent vectors renormalised by their own stepper.
+  void accumulate(double t, const std::array<double, 6>& log_growth);
   ChaosSample sample() const;
 
  private:
@@ -50,6 +55,10 @@ class ChaosIndicators {
   double y_prev_ = 0, mean_integral_ = 0, fli_ = 0;
   std::array<double, 6> log_r_{};
 };
+
+/// Renormalises the tangent vectors: one vector to unit length, six by Benettin's QR (V = QR,
+/// V ← Q with the signs that make R_ii > 0); returns ln|δ| (one vector) or ln|R_ii|.
+std::array<double, 6> renormalise_tangent(Tangent& V);
 
 /// The first tangent vector (1, 1, 1, 1, 1, 1)/√6, or the identity for the spectrum.
 Tangent initial_tangent(int vectors);

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -88,6 +89,51 @@ SectionRun section_orbit(const MethodSettings& method, const Model& model, const
                          const SectionSettings& settings, int orbit, const State& x0, double t0,
                          double t1, IntegrateOptions options, std::vector<Crossing>& out,
                          IntegralsDrift& drift, const std::function<void(double)>& on_step = {});
+
+/// How a section of one start ended.
+enum class SectionStatus {
+  crossings,    ///< max_crossings reached
+  t_end,        ///< the run reached t_end
+  cap,          ///< no t_end: the run hit its step cap before max_crossings
+  no_crossing,  ///< the run ended (at t_end or the cap) without a single crossing
+  failed,       ///< the integration stopped (non-finite state, step limit, step underflow)
+};
+
+/// "crossings", "t_end", "cap", "no_crossing", "failed".
+const char* to_string(SectionStatus s);
+
+/// Everything a section of one start needs.
+struct SectionRequest {
+  MethodSettings method;
+  Surface surface;  ///< parse_surface's result (of ω, m and γ on a body)
+  Direction direction = Direction::up;
+  std::int64_t max_crossings = 1000;
+  /// The start lies on the surface and is the first crossing (a seeded orbit).
+  bool start_on_surface = false;
+  double t0 = 0.0;
+  /// None: forward until max_crossings, at most options.max_steps steps (a fixed-step run is
+  /// given twice that span, an adaptive one a span of 10^12 whose step-underflow floor stays that
+  /// of a run of span 1).
+  std::optional<double> t_end;
+  IntegrateOptions options;  ///< max_steps, min_step_factor (the step is the method's)
+  int orbit = 0;             ///< the label of the crossings
+  /// Called after every accepted step with the time (throws to stop the run).
+  std::function<void(double)> on_step;
+};
+
+/// The section of one start.
+struct SectionResult {
+  SectionStatus status = SectionStatus::no_crossing;
+  Outcome outcome;
+  std::vector<Crossing> crossings;
+  IntegralsDrift drift;       ///< against the start
+  double max_residual = 0.0;  ///< max |g| at the crossings
+  double max_relative = 0.0;  ///< max |g| / scale of g's terms
+};
+
+/// The crossings of the trajectory from x0 with the request's surface (InputError for a state,
+/// surface or span that is not valid, before any work).
+SectionResult section(const Model& model, const State& x0, const SectionRequest& request);
 
 /// The levels of the seeded orbits: energy h and area f = m·γ.
 struct Levels {
