@@ -16,6 +16,7 @@
 #include "newtop/analysis/stability_spin.hpp"
 #include "newtop/integrate/run.hpp"
 #include "newtop/model/integrals.hpp"
+#include "newtop/orbit/debra_delp.hpp"
 #include "newtop/phase/chaos.hpp"
 
 namespace newtop::sweep {
@@ -65,16 +66,72 @@ std::size_t byte_offset(const std::string& text, const toml::source_position& po
   return i;
 }
 
+std::string values_label(const SweepFile& s, const std::vector<double>& v, std::size_t index) {
+  std::string label = "point " + std::to_string(index + 1);
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    label += (k ? ", " : " (") + s.axes[k].key + " = " + format_number(v[k]);
+  }
+  return label + (v.empty() ? "" : ")");
+}
+
+bool is_ratio_key(const std::string& key) { return key == "body.k_R" || key == "body.k_Y"; }
+
+/// The inertia ratios k_R = (B − C)/A, k_Y = (B − A)/C of the point (docs/orbit.md §8; the base's
+/// for a ratio not swept) as the three moments of [body] inertia, B kept: the spans of the three
+/// numbers and their new texts. Nothing when no ratio is swept.
+void set_ratios(const SweepFile& s, const toml::table& base, std::size_t index,
+                const std::vector<double>& values,
+                std::vector<std::pair<std::size_t, std::size_t>>& spans,
+                std::vector<std::string>& texts) {
+  std::optional<double> k_R, k_Y;
+  for (std::size_t k = 0; k < s.axes.size(); ++k) {
+    if (s.axes[k].key == "body.k_R") k_R = values[k];
+    if (s.axes[k].key == "body.k_Y") k_Y = values[k];
+  }
+  if (!k_R && !k_Y) return;
+  const toml::array* a = base["body"]["inertia"].as_array();
+  const char* key = k_R ? "body.k_R" : "body.k_Y";
+  if (!a || a->size() != 3) {
+    throw InputError(s.source + ": [[axes]] key '" + key +
+                     "': expected [body] inertia = [A, B, C] (roll, pitch, yaw) in " +
+                     s.base_source + ", found " +
+                     (a ? io::describe(*a) : std::string("no [body] inertia")));
+  }
+  Vec3 I;
+  for (int i = 0; i < 3; ++i) {
+    const toml::node& n = *a->get(static_cast<std::size_t>(i));
+    if (!n.is_number()) {
+      throw InputError(s.source + ": [[axes]] key '" + key +
+                       "': expected [body] inertia of three numbers, found " + io::describe(n));
+    }
+    I[i] = n.value<double>().value();
+    spans.emplace_back(byte_offset(s.base_text, n.source().begin),
+                       byte_offset(s.base_text, n.source().end));
+  }
+  Vec3 moments;
+  try {
+    moments = I[1] * inertia_from_ratios(k_R.value_or((I[1] - I[2]) / I[0]),
+                                         k_Y.value_or((I[1] - I[0]) / I[2]));
+  } catch (const InputError& e) {
+    throw InputError(s.source + ": " + values_label(s, values, index) + ": " + e.what());
+  }
+  for (int i = 0; i < 3; ++i) texts.push_back(format_number(moments[i]));
+}
+
+}  // namespace
+
 /// The base scenario's text with the swept scenario keys of point `values` written in place of
 /// their values (17 significant digits): the rest of the file, its comments and its line numbers
 /// stay as they are. toml++ locates each value (its source region).
-std::string set_keys(const SweepFile& s, const std::vector<double>& values) {
+std::string set_keys(const SweepFile& s, std::size_t index) {
+  const std::vector<double> values = point_values(s, index);
   const toml::table base = io::parse_toml(s.base_text, s.base_source);
   std::vector<std::pair<std::size_t, std::size_t>> spans;  // [begin, end) of each value
   std::vector<std::string> texts;
+  set_ratios(s, base, index, values, spans, texts);
   for (std::size_t k = 0; k < s.axes.size(); ++k) {
     const std::string& key = s.axes[k].key;
-    if (key == "stability.omega") continue;
+    if (key == "stability.omega" || is_ratio_key(key)) continue;
     const KeyPath p = split_key(s, key);
     const toml::table* t = base[p.table].as_table();
     const toml::node* n = t ? t->get(p.key) : nullptr;
@@ -122,13 +179,27 @@ std::string set_keys(const SweepFile& s, const std::vector<double>& values) {
 }
 
 std::string point_label(const SweepFile& s, std::size_t index) {
-  const std::vector<double> v = point_values(s, index);
-  std::string label = "point " + std::to_string(index + 1);
-  for (std::size_t k = 0; k < v.size(); ++k) {
-    label += (k ? ", " : " (") + s.axes[k].key + " = " + format_number(v[k]);
-  }
-  return label + (v.empty() ? "" : ")");
+  return values_label(s, point_values(s, index), index);
 }
+
+bool wants(const SweepFile& s, const std::string& q) {
+  return std::find(s.quantities.begin(), s.quantities.end(), q) != s.quantities.end();
+}
+
+void rethrow_for_point(const SweepFile& s, std::size_t index, const InputError& e) {
+  // The column may have moved where a value was rewritten on the line: name the file alone.
+  std::string what = e.what();
+  const std::string prefix = s.base_source + ":";
+  if (what.rfind(prefix, 0) == 0) {
+    const std::size_t end = what.find_first_not_of("0123456789:", prefix.size());
+    if (end != std::string::npos && end > prefix.size()) {
+      what = s.base_source + ":" + what.substr(end);
+    }
+  }
+  throw InputError(s.source + ": " + point_label(s, index) + ": " + what);
+}
+
+namespace {
 
 /// The state `stability` analyses: the spin about the axis at Ω, or the scenario's own state
 /// polished to a fixed point. Throws InputError when it is not a fixed point.
@@ -150,10 +221,6 @@ State stability_state(const io::Scenario& sc, const StabilityOptions& o) {
                      "); give [stability] axis");
   }
   return p.state;
-}
-
-bool wants(const SweepFile& s, const std::string& q) {
-  return std::find(s.quantities.begin(), s.quantities.end(), q) != s.quantities.end();
 }
 
 /// One run of the point's scenario: the final state and the drift of the integrals.
@@ -182,6 +249,7 @@ RunResult run(const SweepFile& s, const io::Scenario& sc) {
 }  // namespace
 
 std::vector<std::string> quantity_columns(const SweepFile& s) {
+  if (s.model != BaseModel::fixed_point) return orbit_quantity_columns(s);
   std::vector<std::string> c;
   for (const std::string& q : s.quantities) {
     if (q == "stability")
@@ -215,8 +283,11 @@ void move_onto_level(const EnergyLevel& level, io::Scenario& sc) {
 }
 
 io::Scenario point_scenario(const SweepFile& s, std::size_t index, StabilityOptions* options) {
+  if (s.model != BaseModel::fixed_point) {
+    throw InputError(s.source + ": the base scenario is an orbit scenario (orbit_point_scenario)");
+  }
   const std::vector<double> values = point_values(s, index);
-  const std::string text = set_keys(s, values);
+  const std::string text = set_keys(s, index);
   if (options) {
     *options = s.stability;
     for (std::size_t k = 0; k < s.axes.size(); ++k) {
@@ -228,20 +299,29 @@ io::Scenario point_scenario(const SweepFile& s, std::size_t index, StabilityOpti
     if (s.level) move_onto_level(*s.level, sc);
     return sc;
   } catch (const InputError& e) {
-    // The column may have moved where a value was rewritten on the line: name the file alone.
-    std::string what = e.what();
-    const std::string prefix = s.base_source + ":";
-    if (what.rfind(prefix, 0) == 0) {
-      const std::size_t end = what.find_first_not_of("0123456789:", prefix.size());
-      if (end != std::string::npos && end > prefix.size()) {
-        what = s.base_source + ":" + what.substr(end);
-      }
-    }
-    throw InputError(s.source + ": " + point_label(s, index) + ": " + what);
+    rethrow_for_point(s, index, e);
   }
 }
 
+namespace {
+
+/// The orbit sweep's points: each scenario built and each quantity checked to apply.
+void check_orbit_points(SweepFile& s) {
+  for (std::size_t i = 0, n = point_count(s); i < n; ++i) {
+    const io::OrbitScenario sc = orbit_point_scenario(s, i);
+    if (i == 0) s.input_files = {s.source, s.base_source};
+    try {
+      check_orbit_point(s, sc);
+    } catch (const InputError& e) {
+      throw InputError(s.source + ": " + point_label(s, i) + ": " + e.what());
+    }
+  }
+}
+
+}  // namespace
+
 void check_points(SweepFile& s) {
+  if (s.model != BaseModel::fixed_point) return check_orbit_points(s);
   const std::size_t n = point_count(s);
   for (std::size_t i = 0; i < n; ++i) {
     StabilityOptions o;
@@ -274,6 +354,7 @@ void check_points(SweepFile& s) {
 }
 
 PointResult evaluate_point(const SweepFile& s, std::size_t index) {
+  if (s.model != BaseModel::fixed_point) return evaluate_orbit_point(s, index);
   StabilityOptions o;
   const io::Scenario sc = point_scenario(s, index, &o);
   PointResult r{"ok", {}};
