@@ -130,19 +130,16 @@ PitchProblem point_pitch_problem(const io::OrbitScenario& sc) {
 
 void add_synchronous_odd(const io::OrbitScenario& sc, std::vector<double>& v) {
   const PitchProblem p = point_pitch_problem(sc);
-  const std::vector<PeriodicSolution> all = periodic_solutions(p, resonance(1, 1));
-  const PeriodicSolution* odd = nullptr;  // on θ(0) = 0, θ′(0) nearest the centre 0
-  for (const PeriodicSolution& x : all) {
-    if (x.theta0 == 0.0 && (!odd || std::abs(x.dtheta0) < std::abs(odd->dtheta0))) odd = &x;
-  }
-  if (!odd) {
+  const std::optional<double> dtheta0 = synchronous_odd_rate(p.eccentricity, p.k);
+  if (!dtheta0) {
     v.insert(v.end(), {p.k, 0.0, kNaN, kNaN, kNaN});
     return;
   }
-  const double stable = odd->stability == FloquetStability::stable     ? 1.0
-                        : odd->stability == FloquetStability::unstable ? 0.0
-                                                                       : kNaN;
-  v.insert(v.end(), {p.k, 1.0, odd->dtheta0, odd->monodromy.trace(), stable});
+  const PeriodicSolution odd = periodic_solution_at(p, resonance(1, 1), 0.0, *dtheta0);
+  const double stable = odd.stability == FloquetStability::stable     ? 1.0
+                        : odd.stability == FloquetStability::unstable ? 0.0
+                                                                      : kNaN;
+  v.insert(v.end(), {p.k, 1.0, odd.dtheta0, odd.monodromy.trace(), stable});
 }
 
 }  // namespace

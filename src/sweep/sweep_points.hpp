@@ -2,6 +2,7 @@
 // Internal: the checks of every point of a sweep, before any work (sweep_points.cpp), and the
 // pieces of a point that the orbit scenarios share with the fixed point (sweep_orbit.cpp).
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,5 +37,11 @@ void check_model(const SweepFile& s);
 std::vector<std::string> orbit_quantity_columns(const SweepFile& s);
 void check_orbit_point(const SweepFile& s, const io::OrbitScenario& sc);
 PointResult evaluate_orbit_point(const SweepFile& s, std::size_t index);
+
+/// θ′(0) of the odd synchronous (1:1) periodic solution of Beletsky's equation (θ(0) = 0,
+/// θ(π) = 0) at (e, k), followed in e from the equilibrium θ ≡ 0 of e = 0 (natural continuation,
+/// Newton's method on θ(π) = 0); nullopt where that family has folded back before e
+/// (sweep_synchronous.cpp).
+std::optional<double> synchronous_odd_rate(double eccentricity, double k);
 
 }  // namespace newtop::sweep
