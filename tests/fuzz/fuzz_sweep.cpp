@@ -1,8 +1,9 @@
 // Fuzz harness: the sweep file reader (sweep::read_sweep, sweep::load_sweep): the bytes as a sweep
-// file next to its base scenarios (sweep_bases.hpp: two fixed-point, two orbit scenarios). An accepted file has known, distinct
-// quantities, distinct axis keys, non-empty axes of finite values (of equal lengths for a zip) and
-// at most 10⁸ points; a sweep of a few points is then loaded whole (every point's scenario built
-// and checked), and each point's scenario must build again.
+// file next to its base scenarios (sweep_bases.hpp: two fixed-point, two orbit scenarios). An
+// accepted file has known, distinct quantities, distinct axis keys, non-empty axes of finite
+// values (of equal lengths for a zip) and at most 10⁸ points; a sweep of a few points is then
+// loaded whole (every point's scenario built and checked), and each point's scenario must build
+// again.
 
 #include <algorithm>
 #include <cmath>

@@ -2,8 +2,8 @@
 // The base scenarios of the sweep harnesses (fuzz_sweep.cpp, fuzz_checkpoint.cpp), written next to
 // the fuzzed sweep file: base.toml (Beletsky's problem, for stability and equilibria), one
 // folder down scenarios/heavy.toml (a heavy top, for the trajectory quantities), and the orbit
-// scenarios orbit.toml (circular: debra_delp, the ratio keys) and ellipse.toml (synchronous_odd). The seeds in
-// tests/fuzz/corpus/sweep/ name them by these paths.
+// scenarios orbit.toml (circular: debra_delp, the ratio keys) and ellipse.toml
+// (synchronous_odd). The seeds in tests/fuzz/corpus/sweep/ name them by these paths.
 
 #include <filesystem>
 #include <fstream>
