@@ -7,7 +7,6 @@
 #include <cmath>
 #include <limits>
 
-#include "newtop/integrate/method_settings.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/orbit/debra_delp.hpp"
 #include "newtop/orbit/orbit_integrate.hpp"
@@ -19,43 +18,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-/// The method of a trajectory quantity, as `newtop simulate` resolves it on an orbit: the sweep's
-/// [integrate] before the scenario's, a step for the splitting methods (splitting6 by default), a
-/// tolerance for rkf78 and dopri5 (rkf78 by default).
-MethodSettings orbit_method(const io::OrbitScenario& sc, const io::IntegrateOverrides& o) {
-  const auto& f = sc.integrate;
-  const std::optional<double> step = o.step ? o.step : (o.tol ? std::nullopt : f.step);
-  const std::optional<double> tol = o.tol ? o.tol : (o.step ? std::nullopt : f.tol);
-  MethodSettings m;
-  m.name = o.method            ? *o.method
-           : (o.step || o.tol) ? std::string(o.step ? kDefaultFixedMethod : kOrbitAdaptiveMethod)
-           : f.method          ? *f.method
-           : step              ? std::string(kDefaultFixedMethod)
-                               : std::string(kOrbitAdaptiveMethod);
-  MethodSettings probe = m;  // the name first: a method that does not run on an orbit
-  probe.step = 1.0;
-  validate_orbit_method(probe);
-  if (is_orbit_adaptive_method(m.name)) {
-    if (!tol) throw InputError("[integrate] tol: method " + m.name + " needs a tolerance");
-    m.abs_tol = m.rel_tol = *tol;
-  } else {
-    if (!step) throw InputError("[integrate] step: method " + m.name + " needs a step");
-    m.step = *step;
-  }
-  validate_orbit_method(m);
-  return m;
-}
-
-double orbit_t_end(const io::OrbitScenario& sc, const io::IntegrateOverrides& o) {
-  const std::optional<double> t_end = o.t_end ? o.t_end : sc.integrate.t_end;
-  if (!t_end) throw InputError("[integrate] t_end: missing in the sweep file and the scenario");
-  if (!std::isfinite(*t_end) || !(*t_end > sc.integrate.t0)) {
-    throw InputError("[integrate] t_end: expected a finite time > t0 = " +
-                     format_number(sc.integrate.t0) + ", found " + format_number(*t_end));
-  }
-  return *t_end;
-}
-
 /// One run of the point's scenario: the final state (at a time) and the largest drift of the
 /// Jacobi integral (circular orbit) and of the Casimirs γ·γ, n·n, γ·n.
 struct OrbitRun {
@@ -65,8 +27,8 @@ struct OrbitRun {
 };
 
 OrbitRun run_orbit(const SweepFile& s, const io::OrbitScenario& sc) {
-  const MethodSettings method = orbit_method(sc, s.integrate);
-  const double t0 = sc.integrate.t0, t1 = orbit_t_end(sc, s.integrate);
+  const MethodSettings method = io::resolve_orbit_method(sc, s.integrate);
+  const double t0 = sc.integrate.t0, t1 = io::resolve_orbit_t_end(sc, s.integrate);
   const std::int64_t max_steps = sc.integrate.max_steps.value_or(100'000'000);
   OrbitRun r;
   const OrbitCasimirs c0 = casimirs(sc.initial);
@@ -216,8 +178,8 @@ void check_model(const SweepFile& s) {
 
 void check_orbit_point(const SweepFile& s, const io::OrbitScenario& sc) {
   if (wants(s, "drift") || wants(s, "final_state")) {
-    orbit_method(sc, s.integrate);
-    orbit_t_end(sc, s.integrate);
+    io::resolve_orbit_method(sc, s.integrate);
+    io::resolve_orbit_t_end(sc, s.integrate);
   }
   if (wants(s, "debra_delp")) {
     const auto [k_R, k_Y] = debra_delp_ratios(sc.body);
