@@ -17,6 +17,7 @@
 #include "interrupt.hpp"
 #include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
+#include "newtop/orbit/orbit.hpp"
 #include "summary.hpp"
 #include "sweep_hdf5.hpp"
 #include "sweep_mpi.hpp"
@@ -134,6 +135,11 @@ int run_rank(const SweepArgs& a, const MpiSession& mpi) {
     throw InputError("--threads: expected an integer >= 1, found " + std::to_string(*a.threads));
   }
   const sweep::SweepFile s = sweep::load_sweep(a.sweep);
+  if (s.model != sweep::BaseModel::fixed_point) {  // the units the orbit's μ implies (point 1's)
+    const io::OrbitScenario first = sweep::orbit_point_scenario(s, 0);
+    set_units(first.mu ? orbit_units(*first.mu)
+                       : "those of the scenario (rate in rad per time unit)");
+  }
   // Opened (and so checked) before any work; it appears only when the sweep is complete.
   std::unique_ptr<io::AtomicFile> file;
   std::string error;

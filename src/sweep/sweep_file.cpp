@@ -72,9 +72,22 @@ std::vector<double> axis_values(io::TableReader& r, const std::function<void(std
 }  // namespace
 
 const std::vector<std::string>& known_quantities() {
-  static const std::vector<std::string> q{"stability",   "drift", "equilibria",
-                                          "final_state", "megno", "lyapunov_max"};
+  static const std::vector<std::string> q{"stability",   "drift",          "equilibria",
+                                          "final_state", "megno",          "lyapunov_max",
+                                          "debra_delp",  "synchronous_odd"};
   return q;
+}
+
+const char* to_string(BaseModel m) {
+  switch (m) {
+    case BaseModel::circular_orbit:
+      return "circular orbit";
+    case BaseModel::elliptic_orbit:
+      return "elliptic orbit";
+    case BaseModel::fixed_point:
+      break;
+  }
+  return "fixed point";
 }
 
 std::size_t point_count(const SweepFile& s) {
@@ -162,6 +175,15 @@ void read_level(io::TableReader& top, SweepFile& s) {
     }
   }
   s.level = level;
+}
+
+/// The base's model from its [orbit] kind (a malformed base is reported when its points are
+/// built).
+BaseModel base_model(const std::string& text) {
+  if (!io::is_orbit_scenario_text(text)) return BaseModel::fixed_point;
+  const toml::table doc = io::parse_toml(text, "");
+  const std::optional<std::string> kind = doc["orbit"]["kind"].value<std::string>();
+  return kind == "elliptic" ? BaseModel::elliptic_orbit : BaseModel::circular_orbit;
 }
 
 [[noreturn]] void zip_mismatch(const SweepFile& s, const Axis& first, const std::string& key,
@@ -271,7 +293,17 @@ SweepFile read_sweep(const std::string& path) {
       throw InputError(path + ": [[axes]] key 'stability.omega': needs the quantity 'stability'");
     }
   }
+  for (const Axis& a : s.axes) {  // the ratios set the three moments: not with one of them
+    if ((a.key == "body.k_R" || a.key == "body.k_Y") &&
+        std::any_of(s.axes.begin(), s.axes.end(),
+                    [](const Axis& b) { return b.key.rfind("body.inertia", 0) == 0; })) {
+      throw InputError(path + ": [[axes]] key '" + a.key +
+                       "': expected the inertia ratios or the moments body.inertia[i], found both");
+    }
+  }
   s.base_text = io::read_regular_file(s.base_source, io::kMaxTomlBytes, "scenario file");
+  s.model = base_model(s.base_text);
+  check_model(s);
   return s;
 }
 

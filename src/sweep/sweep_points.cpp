@@ -9,8 +9,6 @@
 #include <limits>
 #include <string>
 
-#include "../io/toml_parse.hpp"
-#include "../io/toml_reader.hpp"
 #include "newtop/analysis/equilibria.hpp"
 #include "newtop/analysis/stability.hpp"
 #include "newtop/analysis/stability_spin.hpp"
@@ -22,113 +20,6 @@ namespace newtop::sweep {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-/// `section.key` or `section.key[i]` of the base scenario, located in its table.
-struct KeyPath {
-  std::string table, key;
-  std::optional<std::size_t> index;
-};
-
-KeyPath split_key(const SweepFile& s, const std::string& key) {
-  const std::size_t dot = key.find('.');
-  KeyPath p;
-  if (dot == std::string::npos || dot == 0 || dot + 1 == key.size()) {
-    throw InputError(s.source + ": [[axes]] key '" + key +
-                     "': expected section.key or section.key[i] (e.g. body.inertia[2])");
-  }
-  p.table = key.substr(0, dot);
-  p.key = key.substr(dot + 1);
-  if (const std::size_t open = p.key.find('['); open != std::string::npos) {
-    const std::string digits = p.key.substr(open + 1, p.key.size() - open - 2);
-    if (p.key.back() != ']' || digits.empty() ||
-        digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 6) {
-      throw InputError(s.source + ": [[axes]] key '" + key + "': expected an index [i], found '" +
-                       p.key.substr(open) + "'");
-    }
-    p.index = std::stoul(digits);
-    p.key = p.key.substr(0, open);
-  }
-  return p;
-}
-
-/// The byte offset in `text` of a toml++ source position (1-based line, 1-based column counted in
-/// code points).
-std::size_t byte_offset(const std::string& text, const toml::source_position& pos) {
-  std::size_t i = 0;
-  for (toml::source_index line = 1; line < pos.line && i < text.size(); ++i) {
-    if (text[i] == '\n') ++line;
-  }
-  for (toml::source_index column = 1; column < pos.column && i < text.size(); ++column) {
-    ++i;  // past one code point: its lead byte and its continuation bytes
-    while (i < text.size() && (static_cast<unsigned char>(text[i]) & 0xC0) == 0x80) ++i;
-  }
-  return i;
-}
-
-/// The base scenario's text with the swept scenario keys of point `values` written in place of
-/// their values (17 significant digits): the rest of the file, its comments and its line numbers
-/// stay as they are. toml++ locates each value (its source region).
-std::string set_keys(const SweepFile& s, const std::vector<double>& values) {
-  const toml::table base = io::parse_toml(s.base_text, s.base_source);
-  std::vector<std::pair<std::size_t, std::size_t>> spans;  // [begin, end) of each value
-  std::vector<std::string> texts;
-  for (std::size_t k = 0; k < s.axes.size(); ++k) {
-    const std::string& key = s.axes[k].key;
-    if (key == "stability.omega") continue;
-    const KeyPath p = split_key(s, key);
-    const toml::table* t = base[p.table].as_table();
-    const toml::node* n = t ? t->get(p.key) : nullptr;
-    if (!n) {
-      throw InputError(s.source + ": [[axes]] key '" + key + "': expected a key of " +
-                       s.base_source + ", found no [" + p.table + "] " + p.key + " there");
-    }
-    if (p.index) {
-      const toml::array* a = n->as_array();
-      if (!a) {
-        throw InputError(s.source + ": [[axes]] key '" + key + "': expected an array at [" +
-                         p.table + "] " + p.key + ", found " + io::describe(*n));
-      }
-      if (*p.index >= a->size()) {
-        throw InputError(s.source + ": [[axes]] key '" + key + "': expected an index below " +
-                         std::to_string(a->size()) + ", found " + std::to_string(*p.index));
-      }
-      n = a->get(*p.index);
-    }
-    if (!n->is_number()) {
-      throw InputError(s.source + ": [[axes]] key '" + key + "': expected a numeric key, found " +
-                       io::describe(*n));
-    }
-    spans.emplace_back(byte_offset(s.base_text, n->source().begin),
-                       byte_offset(s.base_text, n->source().end));
-    // An integer key of the base (max_steps, every) keeps an integer literal for an integral
-    // value: 1e6 is written 1000000, not 1e+06, which the scenario's integer keys would refuse.
-    const double v = values[k];
-    if (n->is_integer() && v == std::trunc(v) && std::abs(v) < 9007199254740992.0) {
-      texts.push_back(std::to_string(static_cast<std::int64_t>(v)));
-    } else {
-      texts.push_back(format_number(v));
-    }
-  }
-  // From the last value to the first, so that the earlier offsets stay valid.
-  std::vector<std::size_t> order(spans.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t a, std::size_t b) { return spans[a].first > spans[b].first; });
-  std::string text = s.base_text;
-  for (const std::size_t i : order) {
-    text.replace(spans[i].first, spans[i].second - spans[i].first, texts[i]);
-  }
-  return text;
-}
-
-std::string point_label(const SweepFile& s, std::size_t index) {
-  const std::vector<double> v = point_values(s, index);
-  std::string label = "point " + std::to_string(index + 1);
-  for (std::size_t k = 0; k < v.size(); ++k) {
-    label += (k ? ", " : " (") + s.axes[k].key + " = " + format_number(v[k]);
-  }
-  return label + (v.empty() ? "" : ")");
-}
 
 /// The state `stability` analyses: the spin about the axis at Ω, or the scenario's own state
 /// polished to a fixed point. Throws InputError when it is not a fixed point.
@@ -150,10 +41,6 @@ State stability_state(const io::Scenario& sc, const StabilityOptions& o) {
                      "); give [stability] axis");
   }
   return p.state;
-}
-
-bool wants(const SweepFile& s, const std::string& q) {
-  return std::find(s.quantities.begin(), s.quantities.end(), q) != s.quantities.end();
 }
 
 /// One run of the point's scenario: the final state and the drift of the integrals.
@@ -182,6 +69,7 @@ RunResult run(const SweepFile& s, const io::Scenario& sc) {
 }  // namespace
 
 std::vector<std::string> quantity_columns(const SweepFile& s) {
+  if (s.model != BaseModel::fixed_point) return orbit_quantity_columns(s);
   std::vector<std::string> c;
   for (const std::string& q : s.quantities) {
     if (q == "stability")
@@ -215,8 +103,11 @@ void move_onto_level(const EnergyLevel& level, io::Scenario& sc) {
 }
 
 io::Scenario point_scenario(const SweepFile& s, std::size_t index, StabilityOptions* options) {
+  if (s.model != BaseModel::fixed_point) {
+    throw InputError(s.source + ": the base scenario is an orbit scenario (orbit_point_scenario)");
+  }
   const std::vector<double> values = point_values(s, index);
-  const std::string text = set_keys(s, values);
+  const std::string text = set_keys(s, index);
   if (options) {
     *options = s.stability;
     for (std::size_t k = 0; k < s.axes.size(); ++k) {
@@ -228,20 +119,29 @@ io::Scenario point_scenario(const SweepFile& s, std::size_t index, StabilityOpti
     if (s.level) move_onto_level(*s.level, sc);
     return sc;
   } catch (const InputError& e) {
-    // The column may have moved where a value was rewritten on the line: name the file alone.
-    std::string what = e.what();
-    const std::string prefix = s.base_source + ":";
-    if (what.rfind(prefix, 0) == 0) {
-      const std::size_t end = what.find_first_not_of("0123456789:", prefix.size());
-      if (end != std::string::npos && end > prefix.size()) {
-        what = s.base_source + ":" + what.substr(end);
-      }
-    }
-    throw InputError(s.source + ": " + point_label(s, index) + ": " + what);
+    rethrow_for_point(s, index, e);
   }
 }
 
+namespace {
+
+/// The orbit sweep's points: each scenario built and each quantity checked to apply.
+void check_orbit_points(SweepFile& s) {
+  for (std::size_t i = 0, n = point_count(s); i < n; ++i) {
+    const io::OrbitScenario sc = orbit_point_scenario(s, i);
+    if (i == 0) s.input_files = {s.source, s.base_source};
+    try {
+      check_orbit_point(s, sc);
+    } catch (const InputError& e) {
+      throw InputError(s.source + ": " + point_label(s, i) + ": " + e.what());
+    }
+  }
+}
+
+}  // namespace
+
 void check_points(SweepFile& s) {
+  if (s.model != BaseModel::fixed_point) return check_orbit_points(s);
   const std::size_t n = point_count(s);
   for (std::size_t i = 0; i < n; ++i) {
     StabilityOptions o;
@@ -274,6 +174,7 @@ void check_points(SweepFile& s) {
 }
 
 PointResult evaluate_point(const SweepFile& s, std::size_t index) {
+  if (s.model != BaseModel::fixed_point) return evaluate_orbit_point(s, index);
   StabilityOptions o;
   const io::Scenario sc = point_scenario(s, index, &o);
   PointResult r{"ok", {}};

@@ -233,7 +233,7 @@ std::optional<std::pair<std::size_t, PointResult>> decode_result(const std::stri
 }
 
 std::size_t batch_size(const SweepFile& s, std::size_t count, int workers) {
-  if (!ensemble_sweep(s)) return 1;
+  if (s.model != BaseModel::fixed_point || !ensemble_sweep(s)) return 1;
   const std::size_t shares = 4 * static_cast<std::size_t>(std::max(workers, 1));
   const std::size_t block = simd_block(best_simd_path());
   const std::size_t share = std::clamp<std::size_t>((count + shares - 1) / shares, 1, 256);
@@ -241,7 +241,8 @@ std::size_t batch_size(const SweepFile& s, std::size_t count, int workers) {
 }
 
 std::vector<PointResult> evaluate_batch(const SweepFile& s, std::span<const std::size_t> indices) {
-  if (ensemble_sweep(s)) return evaluate_points(s, indices);
+  // The ensemble stepper holds the fixed point's model: an orbit's points run one by one.
+  if (s.model == BaseModel::fixed_point && ensemble_sweep(s)) return evaluate_points(s, indices);
   std::vector<PointResult> r;
   r.reserve(indices.size());
   for (const std::size_t i : indices) r.push_back(evaluate_point_safely(s, i));

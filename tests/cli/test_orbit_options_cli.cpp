@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
@@ -104,6 +105,7 @@ std::string value_of(const std::string& option, const Model& m, const std::strin
       {"--diagram", "debra-delp"},
       {"--potential", "quadratic"},
       {"--surface", "gamma1=0"},
+      {"--threads", "2"},
   };
   const auto it = values.find(option);
   return it == values.end() ? "" : it->second;  // a flag, or an option added since (then bare)
@@ -197,6 +199,58 @@ TEST(OptionsOnEveryModel, OrbitSectionCsvHasRollPitchYaw) {
     }
   }
   EXPECT_EQ(k, 3u);
+}
+
+/// The quantities of `newtop sweep` (docs/sweep.md) on each model, and those that must work there.
+const char* const kSweepQuantities[] = {"stability",   "drift",          "equilibria",
+                                        "final_state", "megno",          "lyapunov_max",
+                                        "debra_delp",  "synchronous_odd"};
+
+bool sweep_must_work(const std::string& model, const std::string& q) {
+  if (q == "drift" || q == "final_state") return true;
+  if (model == "circular orbit") return q == "debra_delp";
+  if (model == "elliptic orbit") return q == "synchronous_odd";
+  return q != "debra_delp" && q != "synchronous_odd" && q != "stability";
+}
+
+std::string sweep_file(const Model& m, const std::string& quantity, int n) {
+  const std::string text = "scenario = \"" + newtop::test::example_path(m.example) +
+                           "\"\nquantities = [\"" + quantity +
+                           "\"]\n[integrate]\nt_end = " + m.t_end + "\n";
+  return newtop::test::write_text(
+             newtop::test::scratch_path("newtop_options", "sweep" + std::to_string(n) + ".toml"),
+             text)
+      .string();
+}
+
+// `sweep` takes a sweep file over a scenario: every quantity on every model works or is refused
+// in one line naming it and the model, and so does every option of `sweep` on each model.
+TEST(OptionsOnEveryModel, EverySweepQuantityAndOptionWorksOrIsRefusedInOneLine) {
+  int n = 0;
+  for (const Model& m : kModels) {
+    SCOPED_TRACE(m.name);
+    for (const char* q : kSweepQuantities) {
+      const std::string args = "sweep " + sweep_file(m, q, n++) + " --quiet";
+      const CliResult r = newtop::test::run_newtop(args, newtop::test::Stderr::separate);
+      if (sweep_must_work(m.name, q)) {
+        EXPECT_EQ(r.code, 0) << args << "\n" << r.err;
+      } else if (r.code != 0) {
+        expect_works_or_refused(args);
+        EXPECT_NE(r.err.find(q), std::string::npos) << r.err;
+      }
+      if (std::string(m.name) != "fixed point" && r.code != 0) {
+        EXPECT_NE(r.err.find(std::string("the ") + m.name + " model"), std::string::npos) << r.err;
+      }
+    }
+    for (const std::string& option : options_of("sweep")) {
+      const std::string file =
+          newtop::test::scratch_path("newtop_options", "sweep" + std::to_string(n) + ".csv")
+              .string();
+      std::filesystem::remove(file + ".checkpoint");
+      expect_works_or_refused("sweep " + sweep_file(m, "final_state", n++) + " --quiet " + option +
+                              " " + value_of(option, m, file));
+    }
+  }
 }
 
 }  // namespace

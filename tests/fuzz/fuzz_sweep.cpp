@@ -1,8 +1,9 @@
 // Fuzz harness: the sweep file reader (sweep::read_sweep, sweep::load_sweep): the bytes as a sweep
-// file next to two base scenarios (sweep_bases.hpp). An accepted file has known, distinct
-// quantities, distinct axis keys, non-empty axes of finite values (of equal lengths for a zip) and
-// at most 10⁸ points; a sweep of a few points is then loaded whole (every point's scenario built
-// and checked), and each point's scenario must build again.
+// file next to its base scenarios (sweep_bases.hpp: two fixed-point, two orbit scenarios). An
+// accepted file has known, distinct quantities, distinct axis keys, non-empty axes of finite
+// values (of equal lengths for a zip) and at most 10⁸ points; a sweep of a few points is then
+// loaded whole (every point's scenario built and checked), and each point's scenario must build
+// again.
 
 #include <algorithm>
 #include <cmath>
@@ -62,7 +63,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {  // checked by load_sweep: no point may be refused now
       for (std::size_t i = 0; i < sweep::point_count(s); ++i) {
         require(sweep::point_values(s, i).size() == s.axes.size());
-        sweep::point_scenario(s, i);
+        if (s.model == sweep::BaseModel::fixed_point) {
+          sweep::point_scenario(s, i);
+        } else {
+          sweep::orbit_point_scenario(s, i);
+        }
       }
     } catch (const InputError&) {
       std::abort();

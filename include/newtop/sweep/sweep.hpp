@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/scenario.hpp"
 
 namespace newtop::sweep {
@@ -42,13 +43,21 @@ struct EnergyLevel {
   double sign = 1.0;
 };
 
+/// The model of the base scenario: a body about a fixed point (docs/model.md), or a satellite on a
+/// circular or elliptic orbit (an [orbit] scenario, docs/orbit.md).
+enum class BaseModel { fixed_point, circular_orbit, elliptic_orbit };
+
+/// "fixed point", "circular orbit" or "elliptic orbit".
+const char* to_string(BaseModel m);
+
 /// A sweep file, read and checked: every point's scenario has been built once (bad input at any
 /// point is reported before any work).
 struct SweepFile {
-  std::string source;       ///< the sweep file
-  std::string base_source;  ///< the base scenario file
-  std::string base_text;    ///< its text, as read
-  std::string text;         ///< the sweep file's text, as read
+  std::string source;                        ///< the sweep file
+  std::string base_source;                   ///< the base scenario file
+  std::string base_text;                     ///< its text, as read
+  std::string text;                          ///< the sweep file's text, as read
+  BaseModel model = BaseModel::fixed_point;  ///< from the base scenario's [orbit] kind
   std::vector<std::string> quantities;
   Combine combine = Combine::grid;
   std::vector<Axis> axes;
@@ -93,6 +102,11 @@ PointResult evaluate_point(const SweepFile& s, std::size_t index);
 /// options. Throws InputError naming the point for a value the scenario rejects.
 io::Scenario point_scenario(const SweepFile& s, std::size_t index,
                             StabilityOptions* options = nullptr);
+
+/// The same for a sweep over an orbit scenario (SweepFile::model not fixed_point; point_scenario
+/// refuses those): the base with the swept keys set, the inertia ratios body.k_R and body.k_Y
+/// written as the moments (A, B, C) = B (1 − k_Y, 1 − k_R k_Y, 1 − k_R)/(1 − k_R k_Y).
+io::OrbitScenario orbit_point_scenario(const SweepFile& s, std::size_t index);
 
 /// How to run a sweep: threads, the checkpoint file, progress and stop requests.
 struct RunOptions {
