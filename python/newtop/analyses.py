@@ -18,6 +18,11 @@ def _is_native(obj):
         isinstance(obj, _newtop.Scenario) and obj.source == "<python>")
 
 
+def _orbit(obj):
+    """An OrbitModel or an OrbitScenario (docs/python.md, "Satellites on an orbit")."""
+    return isinstance(obj, (_newtop.OrbitModel, _newtop.OrbitScenario))
+
+
 def _model_state(obj, state):
     if isinstance(obj, _newtop.Scenario):
         return obj.model, (obj.initial if state is None else state)
@@ -50,6 +55,8 @@ def equilibria(model, **options):
     """Every equilibrium at rest (docs/model.md §7): ``Equilibria`` with ``gamma`` (K, 3),
     ``kappa``, ``potential`` (K), ``type``, ``hessian_eigenvalues`` (K, 2), ``minima`` ...
     Given a path: ``newtop equilibria PATH --json`` as a dict."""
+    if _orbit(model) and not options:
+        return _newtop._orbit_equilibria(model.model if hasattr(model, "initial") else model)
     if not _is_native(model):
         return commands.equilibria(model, **options)
     if options:
@@ -63,7 +70,15 @@ def stability(model, *, equilibrium=None, state=None, axis=None, omega=None, **o
     ``state=`` (polished by Newton's method) or ``axis='x'|'y'|'z'`` with ``omega=``. A
     ``StabilityReport``: ``eigenvalues`` (4,) complex, ``max_real_part``, ``linearly_stable``,
     ``lyapunov_stable``, ``threshold_omega_formula``/``_numeric``, ``axis``, ``gamma``, ...
-    Given a path: ``newtop stability PATH --json [options]`` as a dict."""
+    Given a path: ``newtop stability PATH --json [options]`` as a dict.
+    On an orbit (``OrbitModel`` or ``OrbitScenario``, circular): ``equilibrium=K`` or
+    ``state=OrbitState`` (a scenario's [initial] by default), a ``RelativeStability``."""
+    if _orbit(model) and axis is None and omega is None and not options:
+        if isinstance(model, _newtop.OrbitScenario):
+            if equilibrium is None and state is None:
+                state = model.initial
+            model = model.model
+        return _newtop._orbit_stability(model, equilibrium=equilibrium, state=state)
     if not _is_native(model):
         return commands.stability(model, equilibrium=equilibrium, axis=axis, omega=omega,
                                   **options)

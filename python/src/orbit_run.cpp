@@ -75,10 +75,7 @@ py::dict columns(OrbitRows&& rows) {
   };
   py::dict d;
   for (py::ssize_t k = 0; k < width; ++k) {
-    const std::string& name = rows.names[static_cast<std::size_t>(k)];
-    if (name.back() < '1' || name.back() > '3' || name == "q1" || name == "q2" || name == "q3") {
-      d[py::str(name)] = view(k, 1);
-    }
+    d[py::str(rows.names[static_cast<std::size_t>(k)])] = view(k, 1);
   }
   const py::ssize_t v = width == 23 ? 2 : 1;  // omega's first column (after t[, nu])
   d["omega"] = view(v, 3);
