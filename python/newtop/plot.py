@@ -6,7 +6,7 @@ Command line::
                            [--panel all|drift|gamma|omega] [--quantity NAME]
                            [--scenario SCENARIO.toml]
 
-RESULT is any CSV or JSON that ``newtop`` writes; its kind is recognised from its contents
+RESULT is any CSV, JSON or HDF5 (``sweep --out FILE.h5``) that ``newtop`` writes; its kind is recognised from its contents
 (``newtop.results``). A file that is not one gives one line on stderr and exit status 2.
 
 From Python every function returns a ``matplotlib.figure.Figure`` (no pyplot state)::
@@ -176,6 +176,7 @@ def figure(res: Result, equilibria: Result | None = None, panel="all", quantity=
     """The figure for any newtop result (the kind decides). scenario: the scenario file the result
     was computed from, whose fixed parameters the titles of sections and stability maps give."""
     from . import _plot_analysis as an
+    from . import _plot_orbit as orb
     from . import _plot_phase as ph
 
     makers = {
@@ -196,6 +197,11 @@ def figure(res: Result, equilibria: Result | None = None, panel="all", quantity=
         "chaos_history": lambda: ph.chaos_history_figure(res),
         "chaos": lambda: ph.chaos_figure(res),
         "continuation": lambda: _continuation_figure(res),
+        "orbit_trajectory": lambda: orb.orbit_trajectory_figure(res),
+        "debra_delp": lambda: orb.debra_delp_figure(res),
+        "libration": lambda: orb.libration_figure(res),
+        "continuation_family": lambda: orb.continuation_family_figure(res),
+        "continuation_curves": lambda: orb.continuation_curves_figure(res),
     }
     return makers[res.kind]()
 
@@ -257,6 +263,8 @@ from ._plot_analysis import (analytic_figure, equilibria_figure, field_figure,  
                              find_integrals_figure, integrals_figure, omega_scan_figure,
                              rotations_figure, stability_figure, stability_map_figure,
                              staude_cone_figure)
+from ._plot_orbit import (continuation_curves_figure, continuation_family_figure,  # noqa: E402
+                          debra_delp_figure, libration_figure, orbit_trajectory_figure)
 from ._plot_phase import (chaos_figure, chaos_history_figure, section_figure,  # noqa: E402
                           sweep_figure)
 
