@@ -266,3 +266,20 @@ def test_debra_delp_equals_the_program():
     assert d.disagreements_with_closed_form == j["disagreements_with_closed_form"]
     with pytest.raises(newtop.InputError, match="k_R"):
         newtop.debra_delp(k_R=(-1.5, 0.5, 3))
+
+
+def test_the_docs_section_runs(monkeypatch):
+    """The code of docs/python.md's section "Satellites on an orbit" runs as written."""
+    import re
+
+    root = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+    text = open(os.path.join(root, "docs", "python.md"), encoding="utf-8").read()
+    body = text.split("## Satellites on an orbit\n", 1)[1].split("\n## ", 1)[0]
+    blocks = re.findall(r"```python\n(.*?)```", body, re.S)
+    assert blocks
+    monkeypatch.chdir(root)
+    for code in blocks:
+        namespace = {}
+        exec(compile(code, "docs/python.md", "exec"), namespace)
+        assert namespace["eq"].count == 24 and namespace["ell"]["t"].shape == (3,)
+        assert namespace["run"]["roll_pitch_yaw"].shape == (601, 3)
