@@ -51,8 +51,9 @@ int run(const ViewArgs& a) {
   file.commit();
   std::cout << a.out << ": " << std::min<std::size_t>(tr.rows(), options.max_frames) << " of "
             << tr.rows() << " rows, "
-            << (tr.has_attitude() ? "attitude q0..q3 (inertial frame)"
-                                  : "no attitude columns (body frame)")
+            << (tr.orbit()          ? "orbit run (body frame, LVLH triad and orbit)"
+                : tr.has_attitude() ? "attitude q0..q3 (inertial frame)"
+                                    : "no attitude columns (body frame)")
             << (sc ? ", body from " + sc->source : std::string(", no scenario")) << "\n";
   return kExitOk;
 }
@@ -61,7 +62,9 @@ const RegisterCommand reg{Command{
     "view", "Write a self-contained HTML page that plays a trajectory CSV in 3D",
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<ViewArgs>();
-      sub.add_option("csv", a->csv, "trajectory CSV written by newtop simulate --out")->required();
+      sub.add_option("csv", a->csv,
+                     "trajectory CSV written by newtop simulate --out (an orbit run too)")
+          ->required();
       sub.add_option("--scenario", a->scenario,
                      "the run's scenario: draws the body (inertia ellipsoid or mass model) and "
                      "the angular momentum");
