@@ -76,11 +76,22 @@ def orbit_trajectory_figure(res: Result):
     return fig
 
 
+def _debra_delp_columns(res: Result):
+    """The points of the CSV, or of the JSON's `points` as columns."""
+    if res.columns:
+        return res.columns
+    pts = res.data["points"]
+    c = {n: np.array([p[n] for p in pts], dtype=float) for n in ("k_R", "k_Y", "max_real_part")}
+    c["region"] = [p["region"] for p in pts]
+    c["boundary"] = np.array([float(p["boundary"]) for p in pts])
+    return c
+
+
 def debra_delp_figure(res: Result):
-    """The DeBra–Delp diagram: each point coloured by the region of the model's linearisation,
-    boundary points hollow, the closed-form boundaries (k_R = k_Y, k_R k_Y = 0 and
+    """The DeBra–Delp diagram (CSV or JSON): each point coloured by the region of the model's
+    linearisation, boundary points hollow, the closed-form boundaries (k_R = k_Y, k_R k_Y = 0 and
     1 + 3k_R + k_R k_Y = 4√(k_R k_Y)) drawn."""
-    c = res.columns
+    c = _debra_delp_columns(res)
     fig = new_figure(6.5, 6)
     ax = fig.add_subplot()
     region = np.array(c["region"])
@@ -108,9 +119,64 @@ def debra_delp_figure(res: Result):
     return fig
 
 
+def libration_starts_figure(res: Result):
+    """``newtop libration --json``: each start's finite-time Lyapunov exponent against its spin at
+    periapsis, the chaos threshold drawn, and the periodic solutions' spins marked."""
+    d = res.data
+    fig = new_figure(7, 5)
+    ax = fig.add_subplot()
+    starts = d["starts"]
+    spin = np.array([s["spin0"] for s in starts], dtype=float)
+    lyap = np.array([s["lyapunov"] for s in starts], dtype=float)
+    chaotic = np.array([bool(s["chaotic"]) for s in starts])
+    ax.scatter(spin[~chaotic], lyap[~chaotic], color="C0", label="regular start")
+    ax.scatter(spin[chaotic], lyap[chaotic], color="C3", label="chaotic start")
+    ax.axhline(d["chaos_threshold"], color="0.4", linestyle="--", linewidth=0.8,
+               label="chaos threshold")
+    for r in d["resonances"]:
+        for sol in r["solutions"]:
+            ax.axvline(sol["spin0"], color="C2" if sol["stability"] == "stable" else "0.7",
+                       linewidth=0.6)
+    ax.set_xlabel("spin θ̇/n at periapsis")
+    ax.set_ylabel("Lyapunov exponent per orbit")
+    ax.set_title(f"Libration: e = {d['eccentricity']:g}, k = {d['k']:.4g}; resonances' spins "
+                 "as lines (green: stable)")
+    ax.legend(fontsize="small", loc="best")
+    return fig
+
+
+def orbit_equilibria_figure(res: Result):
+    """``newtop equilibria --json`` on an orbit: the Jacobi integral of each relative equilibrium
+    (numbered as listed), coloured by its verdict, with its roll, pitch and yaw beside."""
+    eq = res.data["equilibria"]
+    number = np.array([e["number"] for e in eq])
+    fig = new_figure(12, 4.8)
+    a, b = fig.subplots(1, 2)
+    colours = {"lyapunov": "#4dac26", "gyroscopic": "#2c7bb6", "unstable": "#d7191c"}
+    for verdict, colour in colours.items():
+        sel = np.array([e["verdict"] == verdict for e in eq])
+        a.scatter(number[sel], [e["jacobi"] for e, s in zip(eq, sel) if s], color=colour,
+                  label=verdict)
+    a.set_xlabel("equilibrium (number)")
+    a.set_ylabel("Jacobi integral")
+    a.set_title(f"{len(eq)} relative equilibria")
+    a.legend(fontsize="small", loc="best")
+    rpy = np.array([e["roll_pitch_yaw"] for e in eq], dtype=float)
+    for i, name in enumerate(("roll", "pitch", "yaw")):
+        b.plot(number, np.degrees(rpy[:, i]), "o", label=name, markersize=4)
+    b.set_xlabel("equilibrium (number)")
+    b.set_ylabel("angle relative to LVLH (degrees)")
+    b.set_title("Roll, pitch, yaw of each equilibrium")
+    b.legend(fontsize="small", loc="best")
+    return fig
+
+
 def libration_figure(res: Result):
     """The periapsis section of Beletsky's equation (``newtop libration --out``): θ mod π against
-    θ′ at each periapsis, one colour per start, chaotic starts marked in the legend."""
+    θ′ at each periapsis, one colour per start, chaotic starts marked in the legend; from the
+    JSON, libration_starts_figure."""
+    if not res.columns:
+        return libration_starts_figure(res)
     c = res.columns
     fig = new_figure(7, 6.5)
     ax = fig.add_subplot()

@@ -150,7 +150,12 @@ def simulate_figure(sim: Result, equilibria=None, panel="all") -> Figure:
     largest drift of each integral as bars."""
     csv_path = results.companion_csv(sim)
     if csv_path:
-        return trajectory_figure(results.load(csv_path), equilibria, panel)
+        traj = results.load(csv_path)
+        if traj.kind == "orbit_trajectory":
+            from ._plot_orbit import orbit_trajectory_figure
+
+            return orbit_trajectory_figure(traj)
+        return trajectory_figure(traj, equilibria, panel)
     drift = sim.data["integrals"]["max_abs_drift"]
     names = list(drift)
     fig = new_figure(6, 4)
@@ -200,6 +205,7 @@ def figure(res: Result, equilibria: Result | None = None, panel="all", quantity=
         "orbit_trajectory": lambda: orb.orbit_trajectory_figure(res),
         "debra_delp": lambda: orb.debra_delp_figure(res),
         "libration": lambda: orb.libration_figure(res),
+        "orbit_equilibria": lambda: orb.orbit_equilibria_figure(res),
         "continuation_family": lambda: orb.continuation_family_figure(res),
         "continuation_curves": lambda: orb.continuation_curves_figure(res),
     }

@@ -24,7 +24,8 @@ sweep          CSV with a ``status`` column (``sweep --out FILE.csv``), or the H
                ``sweep --out FILE.h5`` (its axes and quantity grids read as the CSV's columns)
 simulate, integrals, field, equilibria, rotations, stability, analytic, find_integrals, section,
 chaos,
-continuation   JSON objects (``--json``), by their keys
+continuation, orbit_equilibria (``equilibria`` on an orbit), debra_delp (``stability --diagram``),
+libration      JSON objects (``--json``), by their keys
 ============== ====================================================================================
 
 Anything else raises :class:`UnrecognisedResult` with one line naming the file, what was expected
@@ -63,6 +64,9 @@ JSON_KINDS = [
     ("continuation", ("family", "points", "events")),
     ("field", ("mass_properties", "exact", "approx")),
     ("equilibria", ("equilibria", "count_rule")),
+    ("orbit_equilibria", ("equilibria", "count", "lyapunov", "gyroscopic", "unstable")),
+    ("debra_delp", ("diagram", "points", "counts")),
+    ("libration", ("resonances", "starts", "chaos_threshold")),
     ("rotations", ("principal_axes_any_omega", "cone_samples")),
     ("stability", ("eigenvalues", "max_real_part", "linearly_stable")),
     ("analytic", ("case", "samples", "max_abs_error")),

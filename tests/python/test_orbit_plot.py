@@ -1,5 +1,5 @@
 """newtop.plot reads every CSV and HDF5 that newtop writes about orbits and families: each file is
-produced here by the program on the examples, recognised by its contents, and drawn by
+produced here by the program on the examples (and the JSON of the same commands), recognised by its contents, and drawn by
 `python3 -m newtop.plot` into a non-empty figure whose axes carry the expected labels — an orbit
 run (roll/pitch/yaw against time, or the 3-1-3 angles, q0..q3, or gamma and n when no attitude
 was asked for), an orbit section, the DeBra-Delp diagram, libration's periapsis section, the two
@@ -57,6 +57,24 @@ OUTPUTS = {
 }
 
 
+# name: (the program's arguments printing its JSON, the kind, expected labels)
+JSON_OUTPUTS = {
+    "orbit_equilibria.json": (["equilibria", example("satellite_700km")], "orbit_equilibria",
+                              ["Jacobi integral", "angle relative to LVLH (degrees)"]),
+    "orbit_stability.json": (["stability", example("orbit_leo_lagrange_rest")], "stability",
+                             ["Re s", "Im s"]),
+    "debra.json": (["stability", "--diagram", "debra-delp", "--scan",
+                    "k_R=-0.9:0.9:5,k_Y=-0.9:0.9:5"], "debra_delp", ["k_R = (B − C)/A"]),
+    "libration.json": (["libration", example("orbit_spin_orbit"), "--iterates", "20"],
+                       "libration", ["Lyapunov exponent per orbit"]),
+    "orbit_simulate.json": (["simulate", example("satellite_700km"), "--t-end", "1000",
+                             "--euler", "321", "--out", "orbit_simulate.csv"], "simulate",
+                            ["roll, pitch, yaw (rad), C(body←LVLH) = R1 R2 R3"]),
+    "orbit_section.json": (["section", example("orbit_elliptic_pitch"), "--surface",
+                            "gamma1 = 0", "--crossings", "10", "--t-end", "100"], "section", []),
+}
+
+
 def run_program(d, args, out):
     r = subprocess.run([EXE, *args, "--out", out], capture_output=True, text=True, cwd=d)
     assert r.returncode == 0, r.stderr
@@ -67,6 +85,10 @@ def outputs(tmp_path_factory):
     d = tmp_path_factory.mktemp("orbit_outputs")
     for name, (args, _, _) in OUTPUTS.items():
         run_program(d, args, name)
+    for name, (args, _, _) in JSON_OUTPUTS.items():
+        r = subprocess.run([EXE, *args, "--json"], capture_output=True, text=True, cwd=d)
+        assert r.returncode == 0, r.stderr
+        (d / name).write_text(r.stdout)
     return d
 
 
@@ -74,9 +96,13 @@ def labels(fig):
     return {x for ax in fig.axes for x in (ax.get_xlabel(), ax.get_ylabel(), ax.get_title())}
 
 
-@pytest.mark.parametrize("name", sorted(OUTPUTS))
-def test_each_output_is_recognised_and_drawn(outputs, name):
-    _, kind, expected = OUTPUTS[name]
+ALL = {**OUTPUTS, **JSON_OUTPUTS}
+
+
+@pytest.mark.parametrize("name", sorted(ALL))
+def test_each_output_is_recognised_and_drawn(outputs, name, monkeypatch):
+    monkeypatch.chdir(outputs)  # a JSON names its CSV relative to where newtop ran
+    _, kind, expected = ALL[name]
     res = results.load(outputs / name)
     assert res.kind == kind
     fig = plot.figure(res)
@@ -87,8 +113,9 @@ def test_each_output_is_recognised_and_drawn(outputs, name):
             assert ax.get_title() and ax.get_xlabel(), ax.get_title()
 
 
-@pytest.mark.parametrize("name", sorted(OUTPUTS))
-def test_the_command_line_writes_each_figure(outputs, name):
+@pytest.mark.parametrize("name", sorted(ALL))
+def test_the_command_line_writes_each_figure(outputs, name, monkeypatch):
+    monkeypatch.chdir(outputs)
     fig = outputs / (name + ".png")
     r = subprocess.run([sys.executable, "-m", "newtop.plot", str(outputs / name), "-o", str(fig)],
                        capture_output=True, text=True,
