@@ -23,6 +23,13 @@ def _orbit(obj):
     return isinstance(obj, (_newtop.OrbitModel, _newtop.OrbitScenario))
 
 
+def _refuse_orbit(name, obj):
+    """The analyses not yet bound for the orbit model say so in one line."""
+    if _orbit(obj):
+        raise TypeError(f"{name}: not available on an OrbitModel or OrbitScenario from Python "
+                        f"yet; give the scenario file's path (newtop {name} on the command line)")
+
+
 def _model_state(obj, state):
     if isinstance(obj, _newtop.Scenario):
         return obj.model, (obj.initial if state is None else state)
@@ -98,6 +105,7 @@ def chaos(model, state=None, t_end=None, *, spectrum=False, t0=0.0, method=None,
     ``lyapunov_max``, ``megno``, ``fli``, ``spectrum`` (6,) with spectrum=True, ``outcome``;
     ``history=True`` adds the indicators after every step as arrays.
     Given a path: ``newtop chaos PATH --json [options]`` as a dict."""
+    _refuse_orbit("chaos", model)
     if not _is_native(model):
         return commands.chaos(model, t_end=t_end, spectrum=spectrum, method=method, step=step,
                               tol=tol, **options)
@@ -114,6 +122,7 @@ def section(model, states=None, t_end=None, *, surface="gamma3 = 0", crossings=1
     ``t`` (N), ``omega``, ``gamma``, ``m`` (N, 3) in order of orbit and time, each orbit stopped
     after ``crossings`` crossings or at t_end.
     Given a path: ``newtop section PATH --surface ... --json`` as a dict."""
+    _refuse_orbit("section", model)
     if not _is_native(model):
         return commands.section(model, surface=surface, crossings=crossings,
                                 direction=direction, t_end=t_end, method=method, step=step,
@@ -138,6 +147,7 @@ def analytic(model, state=None, times=None, *, max_steps=None, **options):
     ``AnalyticResult`` with ``case``, ``t`` (N), ``omega``, ``gamma``, ``m`` (N, 3),
     ``numeric_omega``, ``numeric_gamma``, ``max_abs_error``, ``period``.
     Given a path: ``newtop analytic PATH --json [options]`` as a dict."""
+    _refuse_orbit("analytic", model)
     if not _is_native(model):
         return commands.analytic(model, times=times, **options)
     m, s = _model_state(model, _state(state))

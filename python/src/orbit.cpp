@@ -268,7 +268,12 @@ void bind_orbit_scenario(py::module_& m) {
            py::arg("max_steps") = py::none())
       .def_readonly("source", &io::OrbitScenario::source)
       .def_property_readonly("model", &OrbitModel::of)
-      .def_readonly("initial", &io::OrbitScenario::initial)
+      .def_property(
+          "initial", [](const io::OrbitScenario& s) { return s.initial; },
+          [](io::OrbitScenario& s, const OrbitState& x) {
+            check_orbit_state(x, kOrbitUnitTolerance);
+            s.initial = x;
+          })
       .def_property_readonly(
           "kind", [](const io::OrbitScenario& s) { return s.circular() ? "circular" : "elliptic"; })
       .def_property(

@@ -283,3 +283,10 @@ def test_the_docs_section_runs(monkeypatch):
         exec(compile(code, "docs/python.md", "exec"), namespace)
         assert namespace["eq"].count == 24 and namespace["ell"]["t"].shape == (3,)
         assert namespace["run"]["roll_pitch_yaw"].shape == (601, 3)
+
+
+def test_analyses_not_bound_for_orbits_say_so():
+    sc = newtop.load_scenario(example("satellite_700km"))
+    for f in (newtop.chaos, newtop.section, newtop.analytic):
+        with pytest.raises(TypeError, match="not available on an OrbitModel"):
+            f(sc)
