@@ -237,7 +237,10 @@ std::vector<std::size_t> frame_rows(std::size_t n, std::size_t limit) {
   return rows;
 }
 
-std::string make_page(const Trajectory& tr, const io::Scenario* scenario,
+namespace {
+
+/// The page of a trajectory with the body's JSON (null without a scenario) and the scenario's name.
+std::string page_with(const Trajectory& tr, io::Json body, io::Json scenario_name,
                       const PageOptions& options) {
   const std::vector<std::size_t> rows = frame_rows(tr.rows(), options.max_frames);
   auto pick = [&](const std::string& name) {
@@ -262,16 +265,12 @@ std::string make_page(const Trajectory& tr, const io::Scenario* scenario,
     for (const auto& n : kAttitudeColumns) columns[n] = pick(n);
   for (const auto& n : kIntegralColumns)
     if (tr.column(n)) integrals[n] = pick(n);
-  io::Json data{{"source", tr.source},
-                {"scenario", scenario ? io::Json(scenario->source) : io::Json(nullptr)},
-                {"rows_total", tr.rows()},
-                {"rows_shown", rows.size()},
-                {"attitude", tr.has_attitude()},
-                {"orbit", tr.orbit()},
-                {"columns", std::move(columns)},
-                {"integrals", std::move(integrals)},
-                {"body", scenario ? body_json(*scenario) : io::Json(nullptr)},
-                {"three_js", std::string(assets::three_js_revision())}};
+  io::Json data{
+      {"source", tr.source},           {"scenario", std::move(scenario_name)},
+      {"rows_total", tr.rows()},       {"rows_shown", rows.size()},
+      {"attitude", tr.has_attitude()}, {"orbit", tr.orbit()},
+      {"columns", std::move(columns)}, {"integrals", std::move(integrals)},
+      {"body", std::move(body)},       {"three_js", std::string(assets::three_js_revision())}};
   std::string json = data.dump();
   // "</" may occur only inside JSON strings, where "<\/" means the same: no early </script>.
   for (std::size_t at = json.find("</"); at != std::string::npos; at = json.find("</", at + 3))
@@ -286,6 +285,25 @@ std::string make_page(const Trajectory& tr, const io::Scenario* scenario,
   replace_once(page, "/*@THREE_JS@*/", assets::three_js());
   replace_once(page, "/*@DATA@*/", json);
   return page;
+}
+
+}  // namespace
+
+std::string make_page(const Trajectory& tr, const io::Scenario* scenario,
+                      const PageOptions& options) {
+  return page_with(tr, scenario ? body_json(*scenario) : io::Json(nullptr),
+                   scenario ? io::Json(scenario->source) : io::Json(nullptr), options);
+}
+
+std::string make_page(const Trajectory& tr, const io::OrbitScenario& scenario,
+                      const PageOptions& options) {
+  const Body& b = scenario.body;
+  io::Json body{{"inertia", vec_json(b.inertia())},
+                {"gyrostat", vec_json(b.gyrostat())},
+                {"center_of_mass", vec_json(b.center_of_mass())},
+                {"mass", b.mass()},
+                {"shape", {{"kind", "inertia_ellipsoid"}}}};
+  return page_with(tr, std::move(body), scenario.source, options);
 }
 
 }  // namespace newtop::viewer

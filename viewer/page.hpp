@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/scenario.hpp"
 
 namespace newtop::viewer {
@@ -43,6 +44,11 @@ struct PageOptions {
 /// integral columns, and with a scenario the body: inertia, gyrostat and shape — the mesh, the
 /// ellipsoid or the point masses of its [mass_model], else the inertia ellipsoid).
 std::string make_page(const Trajectory& trajectory, const io::Scenario* scenario,
+                      const PageOptions& options);
+
+/// The page of an orbit run with its scenario's body (the inertia ellipsoid; the angular
+/// momentum m = Iω + k drawn).
+std::string make_page(const Trajectory& trajectory, const io::OrbitScenario& scenario,
                       const PageOptions& options);
 
 /// Indices of at most `limit` rows out of n, evenly spaced, the first and last always kept.

@@ -212,7 +212,8 @@ def test_orbit_page_shows_the_lvlh_triad_and_the_orbit(browser, tmp_path, exampl
     plane normal to n and has the centre's direction −γ across it."""
     out = tmp_path / "orbit.csv"
     newtop("simulate", os.path.join(SRC, "examples", example + ".toml"), "--out", out, *options)
-    newtop("view", out, "-o", tmp_path / "orbit.html")
+    newtop("view", out, "--scenario", os.path.join(SRC, "examples", example + ".toml"), "-o",
+           tmp_path / "orbit.html")
     rows = read_csv(out)
     page = check_page(browser, tmp_path / "orbit.html", rows, attitude=False)
     assert page.evaluate("newtopView.orbit") is True
