@@ -19,8 +19,27 @@ namespace {
 
 const std::vector<std::string> kStateColumns{"t", "p", "q", "r", "gamma1", "gamma2", "gamma3"};
 const std::vector<std::string> kAttitudeColumns{"q0", "q1", "q2", "q3"};
-/// The integral columns of docs/cli.md, drawn as drift curves when present.
-const std::vector<std::string> kIntegralColumns{"energy", "area", "geometric", "brun", "lagrange"};
+/// The integral columns of docs/cli.md, drawn as drift curves when present (on an orbit the Jacobi
+/// integral and the Casimirs' error; H_nu of an ellipse is not conserved).
+const std::vector<std::string> kIntegralColumns{"energy",   "area",   "geometric",    "brun",
+                                                "lagrange", "jacobi", "casimir_error"};
+/// An orbit run's state (simulate --out on an orbit scenario, docs/orbit.md §12), after t[,nu].
+const std::vector<std::string> kOrbitColumns{"omega1", "omega2",  "omega3",  "gamma1", "gamma2",
+                                             "gamma3", "normal1", "normal2", "normal3"};
+/// The angles relative to LVLH that an orbit run may carry (--euler 321), shown as numbers.
+const std::vector<std::string> kLvlhAngles{"roll", "pitch", "yaw"};
+
+bool starts_with(const std::vector<std::string>& names, std::size_t at,
+                 const std::vector<std::string>& head) {
+  return names.size() >= at + head.size() &&
+         std::equal(head.begin(), head.end(), names.begin() + static_cast<std::ptrdiff_t>(at));
+}
+
+/// t, then nu on an ellipse, then the orbit state.
+bool is_orbit_header(const std::vector<std::string>& names) {
+  if (names.empty() || names[0] != "t") return false;
+  return starts_with(names, names.size() > 1 && names[1] == "nu" ? 2 : 1, kOrbitColumns);
+}
 
 std::vector<std::string_view> split_fields(std::string_view line) {
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
@@ -58,11 +77,12 @@ double parse_cell(std::string_view cell, const std::string& at, const std::strin
 
 void check_header(const std::vector<std::string>& names, const std::string& source,
                   std::string_view header) {
-  if (names.size() < kStateColumns.size() ||
-      !std::equal(kStateColumns.begin(), kStateColumns.end(), names.begin())) {
+  if (!starts_with(names, 0, kStateColumns) && !is_orbit_header(names)) {
     throw InputError(where(source, 1) +
                      "expected the header of a newtop trajectory CSV (newtop simulate --out), "
-                     "starting t,p,q,r,gamma1,gamma2,gamma3, found '" +
+                     "starting t,p,q,r,gamma1,gamma2,gamma3 or, on an orbit, "
+                     "t[,nu],omega1,omega2,omega3,gamma1,gamma2,gamma3,normal1,normal2,normal3, "
+                     "found '" +
                      shortened(header) + "'");
   }
   for (std::size_t i = 0; i < names.size(); ++i) {
@@ -97,6 +117,10 @@ void check_row(const Trajectory& tr, const std::string& at) {
   };
   if (!(norm({"gamma1", "gamma2", "gamma3"}) > 0.0)) {
     throw InputError(at + "gamma1,gamma2,gamma3: expected a direction (non-zero vector), found 0");
+  }
+  if (tr.orbit() && !(norm({"normal1", "normal2", "normal3"}) > 0.0)) {
+    throw InputError(at +
+                     "normal1,normal2,normal3: expected a direction (non-zero vector), found 0");
   }
   if (tr.has_attitude() && !(norm(kAttitudeColumns) > 0.0)) {
     throw InputError(at + "q0,q1,q2,q3: expected a rotation (non-zero quaternion), found 0");
@@ -213,7 +237,10 @@ std::vector<std::size_t> frame_rows(std::size_t n, std::size_t limit) {
   return rows;
 }
 
-std::string make_page(const Trajectory& tr, const io::Scenario* scenario,
+namespace {
+
+/// The page of a trajectory with the body's JSON (null without a scenario) and the scenario's name.
+std::string page_with(const Trajectory& tr, io::Json body, io::Json scenario_name,
                       const PageOptions& options) {
   const std::vector<std::size_t> rows = frame_rows(tr.rows(), options.max_frames);
   auto pick = [&](const std::string& name) {
@@ -222,20 +249,28 @@ std::string make_page(const Trajectory& tr, const io::Scenario* scenario,
     return a;
   };
   io::Json columns, integrals = io::Json::object();
-  for (const auto& n : kStateColumns) columns[n] = pick(n);
+  if (tr.orbit()) {
+    // ω in the page's names p, q, r; n for the LVLH triad and the orbit's plane.
+    for (int i = 0; i < 3; ++i) columns[std::string(1, "pqr"[i])] = pick(kOrbitColumns[i]);
+    for (std::size_t i = 3; i < kOrbitColumns.size(); ++i) {
+      columns[kOrbitColumns[i]] = pick(kOrbitColumns[i]);
+    }
+    columns["t"] = pick("t");
+    for (const auto& n : kLvlhAngles)
+      if (tr.column(n)) columns[n] = pick(n);
+  } else {
+    for (const auto& n : kStateColumns) columns[n] = pick(n);
+  }
   if (tr.has_attitude())
     for (const auto& n : kAttitudeColumns) columns[n] = pick(n);
   for (const auto& n : kIntegralColumns)
     if (tr.column(n)) integrals[n] = pick(n);
-  io::Json data{{"source", tr.source},
-                {"scenario", scenario ? io::Json(scenario->source) : io::Json(nullptr)},
-                {"rows_total", tr.rows()},
-                {"rows_shown", rows.size()},
-                {"attitude", tr.has_attitude()},
-                {"columns", std::move(columns)},
-                {"integrals", std::move(integrals)},
-                {"body", scenario ? body_json(*scenario) : io::Json(nullptr)},
-                {"three_js", std::string(assets::three_js_revision())}};
+  io::Json data{
+      {"source", tr.source},           {"scenario", std::move(scenario_name)},
+      {"rows_total", tr.rows()},       {"rows_shown", rows.size()},
+      {"attitude", tr.has_attitude()}, {"orbit", tr.orbit()},
+      {"columns", std::move(columns)}, {"integrals", std::move(integrals)},
+      {"body", std::move(body)},       {"three_js", std::string(assets::three_js_revision())}};
   std::string json = data.dump();
   // "</" may occur only inside JSON strings, where "<\/" means the same: no early </script>.
   for (std::size_t at = json.find("</"); at != std::string::npos; at = json.find("</", at + 3))
@@ -250,6 +285,25 @@ std::string make_page(const Trajectory& tr, const io::Scenario* scenario,
   replace_once(page, "/*@THREE_JS@*/", assets::three_js());
   replace_once(page, "/*@DATA@*/", json);
   return page;
+}
+
+}  // namespace
+
+std::string make_page(const Trajectory& tr, const io::Scenario* scenario,
+                      const PageOptions& options) {
+  return page_with(tr, scenario ? body_json(*scenario) : io::Json(nullptr),
+                   scenario ? io::Json(scenario->source) : io::Json(nullptr), options);
+}
+
+std::string make_page(const Trajectory& tr, const io::OrbitScenario& scenario,
+                      const PageOptions& options) {
+  const Body& b = scenario.body;
+  io::Json body{{"inertia", vec_json(b.inertia())},
+                {"gyrostat", vec_json(b.gyrostat())},
+                {"center_of_mass", vec_json(b.center_of_mass())},
+                {"mass", b.mass()},
+                {"shape", {{"kind", "inertia_ellipsoid"}}}};
+  return page_with(tr, std::move(body), scenario.source, options);
 }
 
 }  // namespace newtop::viewer

@@ -2,7 +2,10 @@
 // The page's data (the JSON block "newtop-data", written by `newtop view`) holds the CSV's rows and,
 // with --scenario, the body. Every vector is in the body's principal axes (docs/model.md §1). With q0..q3
 // (body -> inertial, scalar first) the body group turns by that quaternion in a fixed inertial
-// frame; without them the body is fixed and the direction to the centre, -gamma(t), moves.
+// frame; without them the body is fixed and the direction to the centre, -gamma(t), moves. An orbit
+// run (data.orbit, docs/orbit.md §12) is shown in the body frame with the LVLH triad (x_L = n × γ
+// along-track, y_L = −n, z_L = −γ to nadir: docs/orbit.md §11) and the orbit: a circle in the
+// plane normal to n through the body, about the centre (not to scale).
 // window.newtopView exposes the state for tests and scripting (setTime, state, frames).
 (function () {
   "use strict";
@@ -25,7 +28,10 @@
 
   // --- header and notes ---------------------------------------------------------------------
   $("title").textContent = "newtop view: " + data.source + (data.scenario ? "  (" + data.scenario + ")" : "");
-  $("mode").textContent = data.attitude
+  $("mode").textContent = data.orbit
+      ? "body frame on an orbit: the LVLH triad (x_L along-track, y_L = −n, z_L to nadir) and the " +
+        "orbit (a circle about the centre, not to scale) turn around the body"
+      : data.attitude
       ? "inertial frame: the body turns by its attitude q0..q3 (body → inertial)"
       : "body frame: no attitude columns (q0..q3) in this CSV, so the body is held fixed and the " +
         "direction to the centre −γ(t) moves around it";
@@ -128,6 +134,45 @@
   const momentumArrow = makeArrow(COLORS.momentum, 0.016);
   bodyGroup.add(centreArrow, omegaArrow);
   if (body) bodyGroup.add(momentumArrow);
+
+  // --- orbit runs: the LVLH triad and the orbit, in the body frame ---------------------------
+  const LVLH_COLORS = ["#ff7f0e", "#17becf", "#8c564b"];  // x_L, y_L, z_L
+  const RING = 1.6;  // the centre at the tip of the centre arrow; the orbit through the body
+  const lvlhArrows = [], lvlhLabels = [];
+  let orbitRing = null;
+  const normalAt = (i) => vec("normal", i);
+  if (data.orbit) {
+    ["xL", "yL", "zL"].forEach((name, i) => {
+      const a = makeArrow(new THREE.Color(LVLH_COLORS[i]).getHex(), 0.012);
+      const l = label(name, new THREE.Vector3(), LVLH_COLORS[i]);
+      bodyGroup.add(a, l);
+      lvlhArrows.push(a);
+      lvlhLabels.push(l);
+    });
+    const points = [];
+    for (let k = 0; k <= 128; ++k) points.push(new THREE.Vector3());
+    orbitRing = line(points, 0x444444, 0.7);
+    bodyGroup.add(orbitRing);
+  }
+  // C(body←LVLH)'s columns, the LVLH axes in body components: n × γ, −n, −γ.
+  const lvlhTriad = (g, n) => [n.clone().cross(g), n.clone().negate(), g.clone().negate()];
+  let shownTriad = null;
+  function showOrbit(g, n) {
+    shownTriad = lvlhTriad(g, n);
+    shownTriad.forEach((v, i) => {
+      setArrow(lvlhArrows[i], v, 1.0);
+      lvlhLabels[i].position.copy(v).multiplyScalar(1.1);
+    });
+    const pos = orbitRing.geometry.attributes.position;
+    const along = shownTriad[0];
+    for (let k = 0; k < pos.count; ++k) {
+      const s = 2 * Math.PI * k / (pos.count - 1);
+      const p = g.clone().multiplyScalar(RING * (Math.cos(s) - 1))
+                    .add(along.clone().multiplyScalar(RING * Math.sin(s)));
+      pos.setXYZ(k, p.x, p.y, p.z);
+    }
+    pos.needsUpdate = true;
+  }
 
   let maxOmega = 0, maxMomentum = 0;
   for (let i = 0; i < N; ++i) {
@@ -235,6 +280,11 @@
       const m = momentumOf(om);
       setArrow(momentumArrow, m, maxMomentum > 0 ? 1.4 * m.length() / maxMomentum : 0);
     }
+    if (data.orbit) {
+      const n = normalAt(k);
+      if (w > 0) n.lerp(normalAt(k + 1), w).normalize();
+      showOrbit(g, n);
+    }
     gammaDot.position.copy(g);
     trace.geometry.setDrawRange(0, k + 1);
     slider.value = String(time);
@@ -249,6 +299,9 @@
     if (data.attitude) {
       const q = bodyGroup.quaternion;
       rows.push(["q", [q.w, q.x, q.y, q.z].map(f).join(", ")]);
+    }
+    if (data.orbit && C.roll) {
+      rows.push(["roll, pitch, yaw", [C.roll[k], C.pitch[k], C.yaw[k]].map(f).join(", ")]);
     }
     Object.keys(data.integrals).forEach((n) => rows.push([n, data.integrals[n][k].toPrecision(12)]));
     $("state").innerHTML = "";
@@ -304,6 +357,7 @@
     frames: N,
     times: C.t,
     attitude: data.attitude,
+    orbit: data.orbit,
     setTime: (t) => { setPlaying(false); apply(t); },
     play: () => setPlaying(true),
     pause: () => setPlaying(false),
@@ -311,8 +365,17 @@
       const q = bodyGroup.quaternion;
       const d = new THREE.Vector3(0, 1, 0).applyQuaternion(centreArrow.quaternion)
                     .applyQuaternion(bodyGroup.quaternion);
-      return { t: time, index: index, playing: playing, body_quaternion: [q.w, q.x, q.y, q.z],
-               centre_direction: [d.x, d.y, d.z] };
+      const out = { t: time, index: index, playing: playing,
+                    body_quaternion: [q.w, q.x, q.y, q.z], centre_direction: [d.x, d.y, d.z] };
+      if (data.orbit) {  // the LVLH axes as drawn (arrow directions), body components
+        out.lvlh = lvlhArrows.map((a) => {
+          const v = new THREE.Vector3(0, 1, 0).applyQuaternion(a.quaternion);
+          return [v.x, v.y, v.z];
+        });
+        const pos = orbitRing.geometry.attributes.position;
+        out.orbit_points = [0, 32, 64].map((k) => [pos.getX(k), pos.getY(k), pos.getZ(k)]);
+      }
+      return out;
     },
     ready: true,
   };

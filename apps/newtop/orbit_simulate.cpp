@@ -9,6 +9,7 @@
 
 #include "newtop/io/json.hpp"
 #include "newtop/io/orbit_scenario.hpp"
+#include "newtop/io/orbit_settings.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/orbit/orbit_integrate.hpp"
 #include "orbit_commands.hpp"
@@ -34,42 +35,11 @@ struct Tracker {
 
 MethodSettings orbit_method(const io::OrbitScenario& sc, const std::optional<std::string>& method,
                             std::optional<double> cli_step, std::optional<double> cli_tol) {
-  const auto& f = sc.integrate;
-  const std::optional<double> step = cli_step ? cli_step : (cli_tol ? std::nullopt : f.step);
-  const std::optional<double> tol = cli_tol ? cli_tol : (cli_step ? std::nullopt : f.tol);
-  MethodSettings m;
-  m.name = method ? *method
-           : cli_step || cli_tol
-               ? std::string(cli_step ? kDefaultFixedMethod : kOrbitAdaptiveMethod)
-           : f.method ? *f.method
-                      : std::string(step ? kDefaultFixedMethod : kOrbitAdaptiveMethod);
-  MethodSettings probe = m;  // the name first: a method that does not run on an orbit
-  probe.step = 1.0;
-  validate_orbit_method(probe);
-  if (is_orbit_adaptive_method(m.name)) {
-    if (!tol) {
-      throw InputError(sc.source + ": tol: method " + m.name + " needs --tol or [integrate] tol");
-    }
-    m.abs_tol = m.rel_tol = *tol;
-  } else {
-    if (!step) {
-      throw InputError(sc.source + ": step: method " + m.name +
-                       " needs --step or [integrate] step");
-    }
-    m.step = *step;
-  }
-  validate_orbit_method(m);
-  return m;
+  return io::resolve_method(sc, {method, cli_step, cli_tol, std::nullopt, std::nullopt});
 }
 
 double orbit_t_end(const io::OrbitScenario& sc, std::optional<double> cli_t_end) {
-  const std::optional<double> t_end = cli_t_end ? cli_t_end : sc.integrate.t_end;
-  if (!t_end) throw InputError(sc.source + ": t_end: missing: give --t-end or [integrate] t_end");
-  if (!std::isfinite(*t_end) || !(*t_end > sc.integrate.t0)) {
-    throw InputError("t_end: expected a finite time > t0 = " + format_number(sc.integrate.t0) +
-                     ", found " + format_number(*t_end));
-  }
-  return *t_end;
+  return io::resolve_t_end(sc, {std::nullopt, std::nullopt, std::nullopt, cli_t_end, std::nullopt});
 }
 
 namespace {

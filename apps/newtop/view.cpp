@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
 #include "page.hpp"
@@ -41,19 +42,38 @@ int run(const ViewArgs& a) {
   // Every input is read and checked before the output file is opened.
   const viewer::Trajectory tr = viewer::parse_trajectory(read_text(a.csv), a.csv);
   std::optional<io::Scenario> sc;
-  if (a.scenario) sc = io::load_scenario(*a.scenario);
+  std::optional<io::OrbitScenario> orbit;
+  if (a.scenario && io::is_orbit_scenario(*a.scenario)) {
+    if (!tr.orbit()) {
+      throw InputError("--scenario: expected the scenario of " + a.csv +
+                       " (a fixed-point run), found an orbit scenario ([orbit])");
+    }
+    orbit = io::load_orbit_scenario(*a.scenario);
+  } else if (a.scenario) {
+    if (tr.orbit()) {
+      throw InputError("--scenario: expected the orbit scenario ([orbit]) of " + a.csv +
+                       " (an orbit run), found " + *a.scenario + ", a fixed-point scenario");
+    }
+    sc = io::load_scenario(*a.scenario);
+  }
   const viewer::PageOptions options{static_cast<std::size_t>(a.max_frames)};
-  const std::string page = viewer::make_page(tr, sc ? &*sc : nullptr, options);
+  const std::string page = orbit ? viewer::make_page(tr, *orbit, options)
+                                 : viewer::make_page(tr, sc ? &*sc : nullptr, options);
   std::vector<std::string> inputs{a.csv};
   if (sc) inputs.insert(inputs.end(), sc->input_files.begin(), sc->input_files.end());
+  if (orbit) inputs.push_back(orbit->source);
   io::AtomicFile file(a.out, inputs);
   file.stream() << page;
   file.commit();
   std::cout << a.out << ": " << std::min<std::size_t>(tr.rows(), options.max_frames) << " of "
             << tr.rows() << " rows, "
-            << (tr.has_attitude() ? "attitude q0..q3 (inertial frame)"
-                                  : "no attitude columns (body frame)")
-            << (sc ? ", body from " + sc->source : std::string(", no scenario")) << "\n";
+            << (tr.orbit()          ? "orbit run (body frame, LVLH triad and orbit)"
+                : tr.has_attitude() ? "attitude q0..q3 (inertial frame)"
+                                    : "no attitude columns (body frame)")
+            << (sc      ? ", body from " + sc->source
+                : orbit ? ", body from " + orbit->source
+                        : std::string(", no scenario"))
+            << "\n";
   return kExitOk;
 }
 
@@ -61,7 +81,9 @@ const RegisterCommand reg{Command{
     "view", "Write a self-contained HTML page that plays a trajectory CSV in 3D",
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<ViewArgs>();
-      sub.add_option("csv", a->csv, "trajectory CSV written by newtop simulate --out")->required();
+      sub.add_option("csv", a->csv,
+                     "trajectory CSV written by newtop simulate --out (an orbit run too)")
+          ->required();
       sub.add_option("--scenario", a->scenario,
                      "the run's scenario: draws the body (inertia ellipsoid or mass model) and "
                      "the angular momentum");

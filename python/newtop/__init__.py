@@ -23,6 +23,8 @@ try:  # the compiled extension, when the build made one (PYTHONPATH=build/python
     from ._newtop import integrals as integrals_at  # noqa: F401  (the library's, at a state)
     from ._newtop import (AnalyticResult, ChaosResult, Equilibria, Section,  # noqa: F401
                           StabilityReport)
+    from ._newtop import (DebraDelpDiagram, OrbitModel, OrbitScenario, OrbitState,  # noqa: F401
+                          RelativeEquilibria, RelativeStability, debra_delp)
     from .commands import (field, find_integrals, integrals, libration, rotations,  # noqa: F401
                            simulate, sweep, view)
     from .analyses import analytic, chaos, equilibria, section, stability  # noqa: F401
@@ -40,4 +42,5 @@ if HAVE_EXTENSION:
                 "analytic", "chaos", "conserved_integrals", "equilibria", "field", "find_integrals",
                 "integrals", "integrals_at", "integrate", "integrate_ensemble", "chaos_ensemble", "is_orbit_scenario", "libration",
                 "load_scenario", "parse_scenario", "rotations", "section", "simulate", "stability", "sweep",
-                "view"]
+                "view", "DebraDelpDiagram", "OrbitModel", "OrbitScenario", "OrbitState",
+                "RelativeEquilibria", "RelativeStability", "debra_delp"]

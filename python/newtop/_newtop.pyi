@@ -118,8 +118,8 @@ class Scenario:
     @property
     def input_files(self) -> list[str]: ...
 
-def load_scenario(path: str) -> Scenario: ...
-def parse_scenario(text: str, source: str = "<string>") -> Scenario: ...
+def load_scenario(path: str) -> Union[Scenario, OrbitScenario]: ...
+def parse_scenario(text: str, source: str = "<string>") -> Union[Scenario, OrbitScenario]: ...
 def is_orbit_scenario(path: str) -> bool: ...
 def integrals(model: Model, state: State) -> dict[str, float]: ...
 def conserved_integrals(model: Model) -> list[str]: ...
@@ -231,3 +231,132 @@ def _section(model: Model, states: Sequence[State], t_end: float, *, surface: st
              tol: Optional[float] = None, max_steps: Optional[int] = None) -> Section: ...
 def _analytic(model: Model, state: State, times: Sequence[float], *,
               max_steps: Optional[int] = None) -> AnalyticResult: ...
+
+
+# --- the satellite on an orbit (orbit.cpp, orbit_run.cpp, orbit_analyses.cpp) -----------------
+
+class OrbitModel:
+    @staticmethod
+    def circular(body: Body, *, mu: Optional[float] = None, radius: Optional[float] = None,
+                 rate: Optional[float] = None) -> OrbitModel: ...
+    @staticmethod
+    def elliptic(body: Body, *, mu: float, a: float, e: float,
+                 true_anomaly: float = 0.0) -> OrbitModel: ...
+    @property
+    def kind(self) -> str: ...
+    @property
+    def body(self) -> Body: ...
+    @property
+    def mu(self) -> Optional[float]: ...
+    @property
+    def radius(self) -> Optional[float]: ...
+    @property
+    def rate(self) -> float: ...
+    @property
+    def lambda_(self) -> Optional[float]: ...
+    @property
+    def eccentricity(self) -> float: ...
+    @property
+    def true_anomaly(self) -> float: ...
+    @property
+    def period(self) -> float: ...
+    def rhs(self, state: OrbitState, nu: Optional[float] = None) -> np.ndarray: ...
+    def integral(self, state: OrbitState, nu: Optional[float] = None) -> float: ...
+
+class OrbitState:
+    def __init__(self, m: Vec3, gamma: Vec3, normal: Vec3) -> None: ...
+    @staticmethod
+    def from_omega(body: Body, omega: Vec3, gamma: Vec3, normal: Vec3) -> OrbitState: ...
+    @staticmethod
+    def from_lvlh(model: OrbitModel, *, roll_pitch_yaw: Optional[Vec3] = None,
+                  lvlh_quaternion: Optional[npt.ArrayLike] = None,
+                  omega_relative: Vec3 = ...) -> OrbitState: ...
+    @property
+    def m(self) -> np.ndarray: ...
+    @property
+    def gamma(self) -> np.ndarray: ...
+    @property
+    def normal(self) -> np.ndarray: ...
+    def omega(self, body: Body) -> np.ndarray: ...
+    def lvlh_quaternion(self) -> list[float]: ...
+    def roll_pitch_yaw(self) -> np.ndarray: ...
+
+class OrbitScenario:
+    def __init__(self, model: OrbitModel, initial: OrbitState, *, t0: float = 0.0,
+                 t_end: Optional[float] = None, method: Optional[str] = None,
+                 step: Optional[float] = None, tol: Optional[float] = None,
+                 max_steps: Optional[int] = None) -> None: ...
+    source: str
+    model: OrbitModel
+    initial: OrbitState
+    kind: str
+    t0: float
+    t_end: Optional[float]
+    method: Optional[str]
+    step: Optional[float]
+    tol: Optional[float]
+    max_steps: Optional[int]
+
+@overload
+def integrate(model: OrbitModel, state: OrbitState, t_end: float, *, t0: float = 0.0,
+              method: Optional[str] = None, step: Optional[float] = None,
+              tol: Optional[float] = None, max_steps: Optional[int] = None,
+              t_eval: Optional[Sequence[float]] = None) -> dict[str, Any]: ...
+@overload
+def integrate(scenario: OrbitScenario, *, t_end: Optional[float] = None,
+              method: Optional[str] = None, step: Optional[float] = None,
+              tol: Optional[float] = None,
+              t_eval: Optional[Sequence[float]] = None) -> dict[str, Any]: ...
+
+class RelativeEquilibria:
+    count: int
+    gamma: np.ndarray
+    normal: np.ndarray
+    lvlh_quaternion: np.ndarray
+    roll_pitch_yaw: np.ndarray
+    jacobi: np.ndarray
+    residual: np.ndarray
+    eigenvalues: np.ndarray
+    max_real_part: np.ndarray
+    linearly_stable: np.ndarray
+    lyapunov_stable: list[Optional[bool]]
+    verdict: list[str]
+    lyapunov: int
+    gyroscopic: int
+    unstable: int
+    unverified: int
+    resultant_tail: float
+    polish_distance: float
+    def __len__(self) -> int: ...
+
+class RelativeStability:
+    eigenvalues: np.ndarray
+    characteristic_polynomial: np.ndarray
+    max_real_part: float
+    linearly_stable: bool
+    lyapunov_stable: Optional[bool]
+    verdict: str
+    state: OrbitState
+    omega: np.ndarray
+    gamma: np.ndarray
+    normal: np.ndarray
+    jacobi: float
+    residual: float
+
+class DebraDelpDiagram:
+    k_R: np.ndarray
+    k_Y: np.ndarray
+    region: list[str]
+    closed_form: list[str]
+    boundary: np.ndarray
+    max_real_part: np.ndarray
+    characteristic: np.ndarray
+    counts: dict[str, int]
+    disagreements_with_closed_form: int
+    def __len__(self) -> int: ...
+
+def debra_delp(k_R: tuple[float, float, int] = (-0.99, 0.99, 67),
+               k_Y: tuple[float, float, int] = (-0.99, 0.99, 67)) -> DebraDelpDiagram: ...
+def _orbit_equilibria(model: OrbitModel) -> RelativeEquilibria: ...
+def _orbit_stability(model: OrbitModel, *, equilibrium: Optional[int] = None,
+                     state: Optional[OrbitState] = None) -> RelativeStability: ...

@@ -12,8 +12,13 @@ from .results import SWEEP_QUANTITY_COLUMNS, TRAJECTORY_HEAD, Result, Unrecognis
 SWEEP_DEFAULT_QUANTITIES = ("megno", "lyapunov_max", "max_real_part", "linearly_stable",
                             "equilibria_count", "drift_energy")
 SECTION_SKIP = set(TRAJECTORY_HEAD) | {"orbit", "m1", "m2", "m3"}
+#: An orbit scenario's section (docs/orbit.md §10): the orbital-frame angle ψ (Beletsky's θ for the
+#: planar pitch motion) against the relative rate about the normal's body axis.
+ORBIT_SECTION_COLUMNS = ["psi", "omega_rel3"]
 #: Axis labels of the section coordinates that cannot be misread (a bare `l` looks like `I` or 1).
-SECTION_LABELS = {"l": "ℓ = atan2(m1, m2), Andoyer angle (rad)", "L_over_G": "L/G = m3/|m|",
+SECTION_LABELS = {"psi": "ψ, 3-2-1 angle about the orbit normal (rad)",
+                  "omega_rel3": "ω_rel,3 (rate relative to the orbital frame)",
+                  "l": "ℓ = atan2(m1, m2), Andoyer angle (rad)", "L_over_G": "L/G = m3/|m|",
                   "g": "g, Andoyer angle about m (rad)", "G": "G = |m|"}
 #: MEGNO maps: the colour scale is clipped to [0, MEGNO_CLIP] (⟨Y⟩ → 2 on regular orbits, grows
 #: like λ t/2 on chaotic ones: the structure is between 0 and a few units; larger values saturate).
@@ -37,7 +42,9 @@ def _section_points(res: Result, columns=None):
     first two after the raw state (the surface coordinates), or the two named in columns."""
     if res.kind == "section" and res.columns:
         c = res.columns
-        names = columns or [n for n in c if n not in SECTION_SKIP][:2]
+        orbit_section = all(n in c for n in ORBIT_SECTION_COLUMNS)
+        names = columns or (ORBIT_SECTION_COLUMNS if orbit_section else
+                            [n for n in c if n not in SECTION_SKIP][:2])
         if len(names) < 2:
             names = ["gamma1", "gamma2"]
         missing = [n for n in names if n not in c]
@@ -147,11 +154,14 @@ def chaos_figure(res: Result):
 
 
 def sweep_axes(res: Result):
-    """The swept keys: the columns before the first quantity column (issue 13's CSV layout)."""
+    """The swept keys: the columns before the first quantity column (issue 13's CSV layout). The
+    program names a key `section.key` (docs/sweep.md): where the first column has a dot, the first
+    column without one is a quantity, whatever its name (new quantities need no list here)."""
     names = list(res.columns)
+    dotted = bool(names) and "." in names[0]
     axes = []
     for n in names:
-        if n in SWEEP_QUANTITY_COLUMNS or n.startswith("drift_"):
+        if n in SWEEP_QUANTITY_COLUMNS or n.startswith("drift_") or (dotted and "." not in n):
             break
         axes.append(n)
     return axes

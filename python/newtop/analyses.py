@@ -18,6 +18,18 @@ def _is_native(obj):
         isinstance(obj, _newtop.Scenario) and obj.source == "<python>")
 
 
+def _orbit(obj):
+    """An OrbitModel or an OrbitScenario (docs/python.md, "Satellites on an orbit")."""
+    return isinstance(obj, (_newtop.OrbitModel, _newtop.OrbitScenario))
+
+
+def _refuse_orbit(name, obj):
+    """The analyses not yet bound for the orbit model say so in one line."""
+    if _orbit(obj):
+        raise TypeError(f"{name}: not available on an OrbitModel or OrbitScenario from Python "
+                        f"yet; give the scenario file's path (newtop {name} on the command line)")
+
+
 def _model_state(obj, state):
     if isinstance(obj, _newtop.Scenario):
         return obj.model, (obj.initial if state is None else state)
@@ -50,6 +62,8 @@ def equilibria(model, **options):
     """Every equilibrium at rest (docs/model.md §7): ``Equilibria`` with ``gamma`` (K, 3),
     ``kappa``, ``potential`` (K), ``type``, ``hessian_eigenvalues`` (K, 2), ``minima`` ...
     Given a path: ``newtop equilibria PATH --json`` as a dict."""
+    if _orbit(model) and not options:
+        return _newtop._orbit_equilibria(model.model if hasattr(model, "initial") else model)
     if not _is_native(model):
         return commands.equilibria(model, **options)
     if options:
@@ -63,7 +77,15 @@ def stability(model, *, equilibrium=None, state=None, axis=None, omega=None, **o
     ``state=`` (polished by Newton's method) or ``axis='x'|'y'|'z'`` with ``omega=``. A
     ``StabilityReport``: ``eigenvalues`` (4,) complex, ``max_real_part``, ``linearly_stable``,
     ``lyapunov_stable``, ``threshold_omega_formula``/``_numeric``, ``axis``, ``gamma``, ...
-    Given a path: ``newtop stability PATH --json [options]`` as a dict."""
+    Given a path: ``newtop stability PATH --json [options]`` as a dict.
+    On an orbit (``OrbitModel`` or ``OrbitScenario``, circular): ``equilibrium=K`` or
+    ``state=OrbitState`` (a scenario's [initial] by default), a ``RelativeStability``."""
+    if _orbit(model) and axis is None and omega is None and not options:
+        if isinstance(model, _newtop.OrbitScenario):
+            if equilibrium is None and state is None:
+                state = model.initial
+            model = model.model
+        return _newtop._orbit_stability(model, equilibrium=equilibrium, state=state)
     if not _is_native(model):
         return commands.stability(model, equilibrium=equilibrium, axis=axis, omega=omega,
                                   **options)
@@ -83,6 +105,7 @@ def chaos(model, state=None, t_end=None, *, spectrum=False, t0=0.0, method=None,
     ``lyapunov_max``, ``megno``, ``fli``, ``spectrum`` (6,) with spectrum=True, ``outcome``;
     ``history=True`` adds the indicators after every step as arrays.
     Given a path: ``newtop chaos PATH --json [options]`` as a dict."""
+    _refuse_orbit("chaos", model)
     if not _is_native(model):
         return commands.chaos(model, t_end=t_end, spectrum=spectrum, method=method, step=step,
                               tol=tol, **options)
@@ -99,6 +122,7 @@ def section(model, states=None, t_end=None, *, surface="gamma3 = 0", crossings=1
     ``t`` (N), ``omega``, ``gamma``, ``m`` (N, 3) in order of orbit and time, each orbit stopped
     after ``crossings`` crossings or at t_end.
     Given a path: ``newtop section PATH --surface ... --json`` as a dict."""
+    _refuse_orbit("section", model)
     if not _is_native(model):
         return commands.section(model, surface=surface, crossings=crossings,
                                 direction=direction, t_end=t_end, method=method, step=step,
@@ -123,6 +147,7 @@ def analytic(model, state=None, times=None, *, max_steps=None, **options):
     ``AnalyticResult`` with ``case``, ``t`` (N), ``omega``, ``gamma``, ``m`` (N, 3),
     ``numeric_omega``, ``numeric_gamma``, ``max_abs_error``, ``period``.
     Given a path: ``newtop analytic PATH --json [options]`` as a dict."""
+    _refuse_orbit("analytic", model)
     if not _is_native(model):
         return commands.analytic(model, times=times, **options)
     m, s = _model_state(model, _state(state))

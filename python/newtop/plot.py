@@ -6,7 +6,7 @@ Command line::
                            [--panel all|drift|gamma|omega] [--quantity NAME]
                            [--scenario SCENARIO.toml]
 
-RESULT is any CSV or JSON that ``newtop`` writes; its kind is recognised from its contents
+RESULT is any CSV, JSON or HDF5 (``sweep --out FILE.h5``) that ``newtop`` writes; its kind is recognised from its contents
 (``newtop.results``). A file that is not one gives one line on stderr and exit status 2.
 
 From Python every function returns a ``matplotlib.figure.Figure`` (no pyplot state)::
@@ -150,7 +150,12 @@ def simulate_figure(sim: Result, equilibria=None, panel="all") -> Figure:
     largest drift of each integral as bars."""
     csv_path = results.companion_csv(sim)
     if csv_path:
-        return trajectory_figure(results.load(csv_path), equilibria, panel)
+        traj = results.load(csv_path)
+        if traj.kind == "orbit_trajectory":
+            from ._plot_orbit import orbit_trajectory_figure
+
+            return orbit_trajectory_figure(traj)
+        return trajectory_figure(traj, equilibria, panel)
     drift = sim.data["integrals"]["max_abs_drift"]
     names = list(drift)
     fig = new_figure(6, 4)
@@ -176,6 +181,7 @@ def figure(res: Result, equilibria: Result | None = None, panel="all", quantity=
     """The figure for any newtop result (the kind decides). scenario: the scenario file the result
     was computed from, whose fixed parameters the titles of sections and stability maps give."""
     from . import _plot_analysis as an
+    from . import _plot_orbit as orb
     from . import _plot_phase as ph
 
     makers = {
@@ -196,6 +202,12 @@ def figure(res: Result, equilibria: Result | None = None, panel="all", quantity=
         "chaos_history": lambda: ph.chaos_history_figure(res),
         "chaos": lambda: ph.chaos_figure(res),
         "continuation": lambda: _continuation_figure(res),
+        "orbit_trajectory": lambda: orb.orbit_trajectory_figure(res),
+        "debra_delp": lambda: orb.debra_delp_figure(res),
+        "libration": lambda: orb.libration_figure(res),
+        "orbit_equilibria": lambda: orb.orbit_equilibria_figure(res),
+        "continuation_family": lambda: orb.continuation_family_figure(res),
+        "continuation_curves": lambda: orb.continuation_curves_figure(res),
     }
     return makers[res.kind]()
 
@@ -257,6 +269,8 @@ from ._plot_analysis import (analytic_figure, equilibria_figure, field_figure,  
                              find_integrals_figure, integrals_figure, omega_scan_figure,
                              rotations_figure, stability_figure, stability_map_figure,
                              staude_cone_figure)
+from ._plot_orbit import (continuation_curves_figure, continuation_family_figure,  # noqa: E402
+                          debra_delp_figure, libration_figure, orbit_trajectory_figure)
 from ._plot_phase import (chaos_figure, chaos_history_figure, section_figure,  # noqa: E402
                           sweep_figure)
 

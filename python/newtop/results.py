@@ -10,12 +10,22 @@ cone           CSV header ``gamma1,gamma2,gamma3,omega_squared,admissible`` (``r
 omega_scan     CSV header ``omega,max_real_part,linearly_stable,energy_casimir_stable``
                (``stability --scan-omega --out``)
 stability_map  CSV header ``P1,P2,max_real_part,verdict`` (``stability --scan ... --out``)
-section        CSV header ``orbit,t,p,q,r,gamma1,gamma2,gamma3,...`` (``section --out``)
+section        CSV header ``orbit,t,p,q,r,gamma1,gamma2,gamma3,...`` (``section --out``; on an
+               orbit ``orbit,t[,nu],p,q,r,gamma1,...,normal1,...,psi,theta,phi,...``)
+orbit_trajectory CSV header ``t[,nu],omega1,omega2,omega3,gamma1,gamma2,gamma3,normal1,...``
+               (``simulate --out`` on an orbit scenario)
+debra_delp     CSV header ``k_R,k_Y,region,closed_form,boundary,max_real_part``
+               (``stability --diagram debra-delp --out``)
+libration      CSV header ``start,orbit,theta,dtheta,spin,lyapunov,chaotic`` (``libration --out``)
+continuation_family CSV ``parameter,...,stability`` (``continue --out``)
+continuation_curves CSV ``curve,type,SECOND,PARAMETER,...`` (``continue --second ... --out``)
 chaos_history  CSV with ``t`` and any of ``megno``, ``lyapunov_max``, ``fli`` (``chaos --out``)
-sweep          CSV with a ``status`` column (``sweep --out FILE.csv``)
+sweep          CSV with a ``status`` column (``sweep --out FILE.csv``), or the HDF5 file of
+               ``sweep --out FILE.h5`` (its axes and quantity grids read as the CSV's columns)
 simulate, integrals, field, equilibria, rotations, stability, analytic, find_integrals, section,
 chaos,
-continuation   JSON objects (``--json``), by their keys
+continuation, orbit_equilibria (``equilibria`` on an orbit), debra_delp (``stability --diagram``),
+libration      JSON objects (``--json``), by their keys
 ============== ====================================================================================
 
 Anything else raises :class:`UnrecognisedResult` with one line naming the file, what was expected
@@ -37,6 +47,10 @@ CONE_HEAD = ["gamma1", "gamma2", "gamma3", "omega_squared", "admissible"]
 OMEGA_SCAN_HEAD = ["omega", "max_real_part", "linearly_stable", "energy_casimir_stable"]
 SECTION_HEAD = ["orbit"] + TRAJECTORY_HEAD
 CHAOS_COLUMNS = ("megno", "lyapunov_max", "fli")
+ORBIT_HEAD = ["omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3", "normal1", "normal2",
+              "normal3"]
+DEBRA_DELP_HEAD = ["k_R", "k_Y", "region", "closed_form", "boundary", "max_real_part"]
+LIBRATION_HEAD = ["start", "orbit", "theta", "dtheta", "spin", "lyapunov", "chaotic"]
 ATTITUDE_COLUMNS = ["q0", "q1", "q2", "q3"]
 #: The quantity columns of ``newtop sweep`` (issue 13); the swept keys' columns come before them.
 SWEEP_QUANTITY_COLUMNS = (
@@ -50,6 +64,9 @@ JSON_KINDS = [
     ("continuation", ("family", "points", "events")),
     ("field", ("mass_properties", "exact", "approx")),
     ("equilibria", ("equilibria", "count_rule")),
+    ("orbit_equilibria", ("equilibria", "count", "lyapunov", "gyroscopic", "unstable")),
+    ("debra_delp", ("diagram", "points", "counts")),
+    ("libration", ("resonances", "starts", "chaos_threshold")),
     ("rotations", ("principal_axes_any_omega", "cone_samples")),
     ("stability", ("eigenvalues", "max_real_part", "linearly_stable")),
     ("analytic", ("case", "samples", "max_abs_error")),
@@ -82,6 +99,8 @@ class Result:
 def load(path) -> Result:
     """Reads a newtop CSV or JSON file and recognises its kind from its contents."""
     path = os.fspath(path)
+    if path.lower().endswith(".h5"):
+        return _load_hdf5(path)
     try:
         with open(path, "r", encoding="utf-8") as f:
             text = f.read()
@@ -111,8 +130,19 @@ def json_kind(data, path="JSON") -> str:
 
 def csv_kind(header, path="CSV") -> str:
     h = list(header)
-    if h[: len(SECTION_HEAD)] == SECTION_HEAD:
+    if h[: len(SECTION_HEAD)] == SECTION_HEAD or (h[:3] == ["orbit", "t", "nu"]
+                                                   and h[3:6] == ["p", "q", "r"]):
         return "section"
+    if h[:1] == ["t"] and (h[1:10] == ORBIT_HEAD or h[1:2] == ["nu"] and h[2:11] == ORBIT_HEAD):
+        return "orbit_trajectory"
+    if h == DEBRA_DELP_HEAD:
+        return "debra_delp"
+    if h == LIBRATION_HEAD:
+        return "libration"
+    if len(h) >= 3 and h[0] == "parameter" and h[-1] == "stability":
+        return "continuation_family"
+    if len(h) >= 5 and h[:2] == ["curve", "type"] and h[-1] == "stability":
+        return "continuation_curves"
     if h[: len(TRAJECTORY_HEAD)] == TRAJECTORY_HEAD:
         return "trajectory"
     if h == CONE_HEAD:
@@ -164,12 +194,60 @@ def _load_csv(text, path) -> Result:
             cells.append(r[i].strip())
         values = [_parse_value(c) for c in cells]
         columns[name] = cells if any(v is None for v in values) else np.array(values, dtype=float)
-    text_ok = {"verdict", "status"}
+    text_ok = {"verdict", "status", "region", "closed_form", "type", "stability"}
     for name, col in columns.items():
         if isinstance(col, list) and name not in text_ok:
             bad = next(c for c in col if _parse_value(c) is None)
             raise UnrecognisedResult(f"{path}: column {name}: expected numbers, found '{bad}'")
     return Result(kind, path, columns=columns)
+
+
+def _load_hdf5(path) -> Result:
+    """The HDF5 file of ``newtop sweep --out FILE.h5``: the group ``axes`` holds one dataset per
+    swept key, every other dataset a grid over them (first key outermost, as the CSV's rows)."""
+    try:
+        import h5py
+    except ImportError:
+        raise UnrecognisedResult(f"{path}: reading HDF5 needs h5py (python3-h5py, "
+                                 "scripts/install-deps.sh)") from None
+    try:
+        f = h5py.File(path, "r")
+    except OSError as e:
+        raise UnrecognisedResult(f"{path}: cannot read as HDF5: {e}") from None
+    with f:
+        if "axes" not in f or "status" not in f:
+            raise UnrecognisedResult(f"{path}: not a newtop result: expected the HDF5 of newtop "
+                                     f"sweep (groups axes, status), found {', '.join(f) or 'none'}")
+        names = _hdf5_axis_order(f)
+        values = [np.asarray(f["axes"][n], dtype=float) for n in names]
+        if np.asarray(f["status"]).ndim == 1 and len(names) > 1:  # a zip: one point per row
+            columns = dict(zip(names, values))
+        else:
+            columns = {n: g.ravel() for n, g in zip(names, np.meshgrid(*values, indexing="ij"))}
+        for n in f:
+            if n == "axes":
+                continue
+            v = np.asarray(f[n]).ravel()
+            columns[n] = ([x.decode() if isinstance(x, bytes) else str(x) for x in v]
+                          if v.dtype.kind in "OSU" else v.astype(float))
+    status = columns.pop("status")
+    columns["status"] = status  # last, as in the CSV
+    return Result("sweep", path, columns=columns)
+
+
+def _hdf5_axis_order(f):
+    """The swept keys in the order of the sweep file (the grid's dimensions), read from the file's
+    `sweep` attribute (the sweep file's text); HDF5 lists a group's members alphabetically."""
+    names = list(f["axes"])
+    text = f.attrs.get("sweep")
+    try:
+        import tomllib
+
+        doc = tomllib.loads(text.decode() if isinstance(text, bytes) else str(text))
+        keys = [a["key"] for a in doc["axes"]]
+    except Exception:  # no readable sweep text: the group's order
+        return names
+    return keys if sorted(keys) == sorted(names) else names
 
 
 def integral_columns(res: Result):

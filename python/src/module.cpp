@@ -3,6 +3,7 @@
 
 #include "bindings.hpp"
 #include "newtop/core/types.hpp"
+#include "orbit_model.hpp"
 
 PYBIND11_MODULE(_newtop, m) {
   m.doc() =
@@ -17,4 +18,7 @@ PYBIND11_MODULE(_newtop, m) {
   newtop::python::bind_analyses(m);
   newtop::python::bind_command_line(m);
   newtop::python::bind_continuation(m);
+  newtop::python::bind_orbit(m);
+  newtop::python::bind_orbit_run(m);
+  newtop::python::bind_orbit_analyses(m);
 }

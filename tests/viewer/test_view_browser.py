@@ -199,3 +199,38 @@ def test_page_without_scenario(browser, tmp_path):
     page = check_page(browser, tmp_path / "brun.html", {k: v[keep] for k, v in rows.items()},
                       attitude=False)
     assert "No --scenario" in page.evaluate("document.getElementById('notes').textContent")
+
+
+@pytest.mark.parametrize("example,options", [
+    ("satellite_700km", ["--t-end", "3000", "--dt-out", "20", "--euler", "321"]),
+    ("orbit_elliptic_pitch", ["--t-end", "6", "--dt-out", "0.05", "--attitude"]),
+])
+def test_orbit_page_shows_the_lvlh_triad_and_the_orbit(browser, tmp_path, example, options):
+    """An orbit run (docs/orbit.md §12) in the body frame: at each time the drawn LVLH axes are
+    the columns n × γ, −n, −γ of C(body←LVLH) built here from the row's γ and n (and the row's
+    q0..q3 give the same matrix), and the orbit's circle passes through the body, lies in the
+    plane normal to n and has the centre's direction −γ across it."""
+    out = tmp_path / "orbit.csv"
+    newtop("simulate", os.path.join(SRC, "examples", example + ".toml"), "--out", out, *options)
+    newtop("view", out, "--scenario", os.path.join(SRC, "examples", example + ".toml"), "-o",
+           tmp_path / "orbit.html")
+    rows = read_csv(out)
+    page = check_page(browser, tmp_path / "orbit.html", rows, attitude=False)
+    assert page.evaluate("newtopView.orbit") is True
+    assert "LVLH" in page.evaluate("document.getElementById('mode').textContent")
+    n_rows = len(rows["t"])
+    for k in (0, n_rows // 2, n_rows - 1):
+        s = move_slider(page, rows["t"][k])
+        g = np.array([rows[c][k] for c in ("gamma1", "gamma2", "gamma3")])
+        n = np.array([rows[c][k] for c in ("normal1", "normal2", "normal3")])
+        g, n = g / np.linalg.norm(g), n / np.linalg.norm(n)
+        triad = np.array([np.cross(n, g), -n, -g])
+        assert np.abs(np.array(s["lvlh"]) - triad).max() < ATTITUDE_TOLERANCE
+        q0, q = rows["q0"][k], np.array([rows[c][k] for c in ("q1", "q2", "q3")])
+        cross = np.array([[0, -q[2], q[1]], [q[2], 0, -q[0]], [-q[1], q[0], 0]])
+        C = (q0 ** 2 - q @ q) * np.eye(3) + 2 * np.outer(q, q) - 2 * q0 * cross
+        assert np.abs(C - triad.T).max() < 1e-12  # the row's own attitude, columns = LVLH axes
+        # float32 vertices: 1e-6 of the circle's size
+        p = np.array(s["orbit_points"])
+        assert np.abs(p[0]).max() < 1e-6 and np.abs(p @ n).max() < 1e-5
+        assert np.abs(p[2] - (-3.2 * g)).max() < 1e-5  # half an orbit on: across the centre

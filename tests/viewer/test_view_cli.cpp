@@ -89,6 +89,37 @@ TEST(View, BadInputIsOneLineExitTwoAndNoPage) {
   EXPECT_FALSE(fs::exists(scratch("s.html")));
 }
 
+TEST(View, OrbitRunWithItsScenarioAndMismatchesRefused) {
+  const std::string orbit = newtop::test::example_path("satellite_700km.toml");
+  const std::string fixed = newtop::test::example_path("heavy_top.toml");
+  const fs::path ocsv = scratch("orbit.csv"), fcsv = scratch("fixed.csv");
+  ASSERT_EQ(run("simulate " + orbit + " --t-end 100 --euler 321 --out " + ocsv.string()).code, 0);
+  ASSERT_EQ(run("simulate " + fixed + " --t-end 1 --out " + fcsv.string()).code, 0);
+  const fs::path html = scratch("orbit.html");
+  const CliResult r =
+      run("view " + ocsv.string() + " --scenario " + orbit + " -o " + html.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string page = read_file(html);
+  EXPECT_NE(page.find("\"orbit\":true"), std::string::npos);
+  EXPECT_NE(page.find("\"inertia\":[1200.0,1500.0,900.0]"), std::string::npos);
+  // The LVLH attitude is not an inertial one: the page does not turn the body by it.
+  EXPECT_NE(page.find("\"attitude\":false"), std::string::npos);
+  const struct {
+    fs::path csv;
+    std::string scenario;
+    const char* expect;
+  } bad[] = {{ocsv, fixed, "expected the orbit scenario ([orbit])"},
+             {fcsv, orbit, "found an orbit scenario ([orbit])"}};
+  for (const auto& b : bad) {
+    const fs::path out = scratch("mismatch.html");
+    const CliResult m =
+        run("view " + b.csv.string() + " --scenario " + b.scenario + " -o " + out.string());
+    EXPECT_EQ(m.code, 2);
+    EXPECT_NE(m.err.find(b.expect), std::string::npos) << m.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
 TEST(View, FrameRowsAreEvenlySpacedWithBothEnds) {
   using newtop::viewer::frame_rows;
   EXPECT_EQ(frame_rows(3, 5), (std::vector<std::size_t>{0, 1, 2}));
