@@ -5,6 +5,7 @@
 
 #include "continue.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -177,8 +178,16 @@ Run run_resonance(const ContinueArgs& a, double p0, double p1) {
   std::optional<SecondAxis> second;
   if (a.second) second = check_second(a, sc.body.inertia(), base.eccentricity, p0);
   const double centre = r.half_turns / (2.0 * r.periods);
-  Run run{resonance_family(path, p0, p1, r, line, centre), {"theta0", "dtheta0"}, {}};
+  Run run{resonance_family(path, p0, p1, r, line, centre), {"theta0", "dtheta0"}, {}, {}};
   if (second) run.boundaries = boundaries(*second, run.family, r, line);
+  if (a.switch_branches) {
+    for (std::size_t i = 0; i < run.family.events.size(); ++i) {
+      const BifurcationEvent& ev = run.family.events[i];
+      if (ev.type != BifurcationType::flip && ev.type != BifurcationType::branch_point) continue;
+      run.branches.push_back(
+          {i, resonance_branch(path, ev, std::min(p0, p1), std::max(p0, p1), r, line)});
+    }
+  }
   return run;
 }
 
@@ -189,7 +198,7 @@ Run run_rotation(const ContinueArgs& a, double p0, double p1) {
     throw InputError(sc.source + ": [field]: expected the quadratic field for --family rotation");
   }
   const QuadraticModel& m = sc.model.quadratic();
-  return {rotation_family(m, largest_axis(m.body), p0, p1), {"omega"}, {}};
+  return {rotation_family(m, largest_axis(m.body), p0, p1), {"omega"}, {}, {}};
 }
 
 Run run_equilibrium(const ContinueArgs& a, double p0, double p1) {
@@ -212,7 +221,8 @@ Run run_equilibrium(const ContinueArgs& a, double p0, double p1) {
                      ": [initial]: expected a relative equilibrium with the radius and "
                      "the orbit normal along principal axes (at rest in the orbital frame)");
   }
-  return {equilibrium_family(sc.body.inertia(), radial, normal, *i, p0, p1), {"A", "B", "C"}, {}};
+  return {
+      equilibrium_family(sc.body.inertia(), radial, normal, *i, p0, p1), {"A", "B", "C"}, {}, {}};
 }
 
 /// The options that apply only to some families, checked before any work.
@@ -223,6 +233,12 @@ void check_options(const ContinueArgs& a) {
   }
   if (a.second && a.family != "resonance") {
     throw InputError("--second: applies only to --family resonance, found --family " + a.family);
+  }
+  if (a.switch_branches && a.family != "resonance") {
+    throw InputError("--switch: applies only to --family resonance, found --family " + a.family);
+  }
+  if (a.switch_branches && a.second) {
+    throw InputError("--switch: expected one of --switch and --second, found both");
   }
   if (a.family != "resonance" && (a.resonance || a.line)) {
     throw InputError(std::string(a.resonance ? "--resonance" : "--line") +
@@ -276,6 +292,8 @@ const RegisterCommand reg{Command{
                      "second key: each event's locus continued in it (resonance)");
       sub.add_option("--second-range", a->second_range,
                      "C:D, about the scenario's value of the second key");
+      sub.add_flag("--switch", a->switch_branches,
+                   "continue the branch from each located flip and branch point (resonance)");
       sub.add_option("--out", a->out, "the family as CSV");
       sub.add_flag("--json", a->json, "print one JSON object");
       return [a] { return run(*a); };

@@ -16,6 +16,7 @@ struct ContinueArgs {
   std::string scenario, family, parameter, range;
   std::optional<std::string> resonance, line, second, second_range, out;
   bool json = false;
+  bool switch_branches = false;  // --switch
 };
 
 /// A located event's locus in the second key (--second).
@@ -25,11 +26,18 @@ struct Boundary {
   std::string end;
 };
 
-/// The family computed, the names of its values, and the boundaries.
+/// The family that leaves a located flip or branch point (--switch).
+struct Branch {
+  std::size_t event = 0;  // its index in Family::events
+  Family family;
+};
+
+/// The family computed, the names of its values, the boundaries and the branches.
 struct Run {
   Family family;
   std::vector<std::string> names;  // of FamilyPoint::values
   std::vector<Boundary> boundaries;
+  std::vector<Branch> branches;
 };
 
 /// Writes the CSV into `file` (when given) and commits it, then prints the JSON or the summary.

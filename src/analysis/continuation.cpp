@@ -171,7 +171,7 @@ void locate_events(const Curve& c, const VectorXd& xa, const FamilyPoint& fa, co
     }
     if (!std::isfinite(g(root))) continue;
     const bool own = j >= 0 && j < count;  // one of the family's tests, not the fold or the BP
-    const BifurcationType type = j < 0       ? BifurcationType::fold
+    const BifurcationType type = j < 0 ? BifurcationType::fold
                                  : own ? c.problem().tests[j].type
                                        : BifurcationType::branch_point;
     if (own && c.problem().tests[j].confirm && !c.problem().tests[j].confirm(at)) continue;
@@ -261,8 +261,9 @@ void march(const Curve& c, VectorXd x, VectorXd t, const Ends& ends, Family& fam
       break;
     }
     if (ends.stop_at_branch_point &&
-        std::any_of(fam.events.begin() + static_cast<std::ptrdiff_t>(before), fam.events.end(),
-                    [](const BifurcationEvent& e) { return e.type == BifurcationType::branch_point; })) {
+        std::any_of(
+            fam.events.begin() + static_cast<std::ptrdiff_t>(before), fam.events.end(),
+            [](const BifurcationEvent& e) { return e.type == BifurcationType::branch_point; })) {
       fam.end = "branch_point";
       break;
     }
@@ -319,11 +320,16 @@ Family continue_branch(const ContinuationProblem& problem, const VectorXd& u_sta
   const VectorXd d = direction.normalized();
   // The first point of the branch: the branch point moved by the switching step along the new
   // branch's direction, corrected on the hyperplane orthogonal to it (Keller 1977; AUTO's ISW).
+  // Near the branch point [F_u F_p; dᵀ] is ill-conditioned (its least singular value is of the
+  // order of the switching step), which magnifies the residual's round-off in the corrections:
+  // this first correction may take four times the iterations.
+  ContinuationSettings first = settings;
+  first.max_newton *= 4;
   VectorXd x = star + settings.switch_step * d;
-  if (!c.correct(x, d, x)) {
+  if (!Curve(pr, first).correct(x, d, x)) {
     throw InputError("branch: Newton's method found no point of the new branch at " +
-                     format_number(settings.switch_step) + " from the branch point at p = " +
-                     format_number(p_star));
+                     format_number(settings.switch_step) +
+                     " from the branch point at p = " + format_number(p_star));
   }
   Family fam;
   fam.points.push_back(c.evaluate(star, d));

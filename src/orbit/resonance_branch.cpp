@@ -41,8 +41,8 @@ Family resonance_branch(const PitchPath& path, const BifurcationEvent& event, do
   path(p_min);  // throws for an end outside the problem's domain, before any work
   path(p_max);
   const bool flip = event.type == BifurcationType::flip;
-  const SpinOrbitResonance rb = flip ? SpinOrbitResonance{r.p, r.q, 2 * r.periods, 2 * r.half_turns}
-                                     : r;
+  const SpinOrbitResonance rb =
+      flip ? SpinOrbitResonance{r.p, r.q, 2 * r.periods, 2 * r.half_turns} : r;
   const double period = 2 * kPi * rb.periods;
   const Vec2 star(line, event.point.values[1]);
   // The critical eigenvector of the parent's monodromy: the new branch leaves along (v, 0).

@@ -124,9 +124,7 @@ TEST(ContinuationBranch, AsymmetricBranchLeavesThePitchforkWithoutTheSymmetry) {
     worst = std::max(worst, closed);
     // Not symmetric: neither θ(0) nor θ(π) on a reversibility line (a multiple of π/2).
     const double th_pi = integrate(e, p.parameter, x0, kPi)[0];
-    auto off_line = [](double th) {
-      return std::abs(th - kPi / 2 * std::round(th / (kPi / 2)));
-    };
+    auto off_line = [](double th) { return std::abs(th - kPi / 2 * std::round(th / (kPi / 2))); };
     if (std::min(off_line(x0[0]), off_line(th_pi)) > kNotClosed) ++asymmetric;
   }
   EXPECT_GE(asymmetric, static_cast<int>(a.points.size()) - 3);

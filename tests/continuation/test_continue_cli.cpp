@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <sstream>
 
 #include "newtop/orbit/orbit_families.hpp"
@@ -87,6 +88,44 @@ TEST(ContinueCli, SecondKeyGivesTheEventsCurves) {
   EXPECT_DOUBLE_EQ(fold["points"][0]["parameter"].get<double>(), curve.points.back().values[2]);
 }
 
+TEST(ContinueCli, SwitchContinuesTheBranchFromEachFlip) {
+  // k = 0.9, e from 0.25 to 0.35: the two flips (0.2755, 0.3287), each with its period-doubled
+  // branch, the library's; the CSV's rows are the family's (branch 0) and the branches'.
+  const std::string csv = test::scratch_path("continue_cli", "switch.csv").string();
+  const auto r = test::run_newtop(kSynchronous +
+                                      " --family resonance --parameter orbit.eccentricity"
+                                      " --range 0.25:0.35 --switch --json --out " +
+                                      csv,
+                                  test::Stderr::separate);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const PitchPath path = eccentricity_path(0.9);
+  const Family f = resonance_family(path, 0.25, 0.35, resonance(1, 1), 0.0, 0.0);
+  ASSERT_EQ(f.events.size(), 2u);
+  ASSERT_EQ(j["branches"].size(), 2u);
+  std::size_t rows = f.points.size();
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Family b = resonance_branch(path, f.events[i], 0.25, 0.35, resonance(1, 1), 0.0);
+    const auto& jb = j["branches"][i];
+    EXPECT_EQ(jb["event"], i);
+    EXPECT_EQ(jb["type"], "flip");
+    EXPECT_EQ(jb["end"], b.end);
+    ASSERT_EQ(jb["points"].size(), b.points.size());
+    EXPECT_EQ(jb["events"].size(), b.events.size());
+    EXPECT_DOUBLE_EQ(jb["points"].back()["values"]["dtheta0"].get<double>(),
+                     b.points.back().values[1]);
+    EXPECT_DOUBLE_EQ(jb["points"][0]["period"].get<double>(), 4 * std::numbers::pi);
+    rows += b.points.size();
+  }
+  std::istringstream in(test::read_text(csv));
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("branch,parameter,theta0,dtheta0,period,", 0), 0u) << line;
+  std::size_t n = 0;
+  while (std::getline(in, line)) ++n;
+  EXPECT_EQ(n, rows);
+}
+
 TEST(ContinueCli, BadInputIsOneLineAndWritesNothing) {
   const std::string csv = test::scratch_path("continue_cli", "bad.csv").string();
   const std::string res = " --family resonance --parameter orbit.eccentricity";
@@ -114,6 +153,9 @@ TEST(ContinueCli, BadInputIsOneLineAndWritesNothing) {
            beletsky + " --family rotation --parameter stability.omega --range 0.1:3 --second "
                       "body.inertia[0] --second-range 0.9:1.1",
            beletsky + " --family equilibrium --parameter body.inertia[0] --range 0.9:1.1",
+           beletsky + " --family rotation --parameter stability.omega --range 0.1:3 --switch",
+           kSynchronous + res +
+               " --range 0:0.5 --switch --second body.inertia[0] --second-range 0.05:0.5",
        }) {
     const auto r = test::run_newtop(args + " --out " + csv, test::Stderr::separate);
     EXPECT_EQ(r.code, 2) << args;

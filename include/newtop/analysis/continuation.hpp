@@ -79,7 +79,7 @@ struct ContinuationSettings {
   double max_angle = 0.2;  ///< radians between successive tangents before the step is halved
   int max_points = 5000;
   int max_newton = 8;
-  double tolerance = 1e-12;  ///< max |F| and max |ΔX| of the corrector
+  double tolerance = 1e-12;   ///< max |F| and max |ΔX| of the corrector
   double switch_step = 1e-3;  ///< continue_branch: the first step off the branch point
 };
 
@@ -109,7 +109,7 @@ Family continue_family(const ContinuationProblem& problem, const Eigen::VectorXd
 /// point exactly there, `range`) or meets another family (`branch_point`: the located branch point
 /// is its last event). InputError for a bad input or when the first corrector fails.
 Family continue_branch(const ContinuationProblem& problem, const Eigen::VectorXd& u_star,
-                       double p_star, const Eigen::VectorXd& direction, double p_min,
-                       double p_max, const ContinuationSettings& settings = {});
+                       double p_star, const Eigen::VectorXd& direction, double p_min, double p_max,
+                       const ContinuationSettings& settings = {});
 
 }  // namespace newtop
