@@ -5,6 +5,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 
@@ -60,7 +61,7 @@ void bind_continuation(py::module_& m) {
   m.def(
       "resonance_family",
       [](double eccentricity, double k, const std::string& parameter, double end, int p, int q,
-         double line) {
+         double line, bool switch_branches) {
         const SpinOrbitResonance r = resonance(p, q);
         PitchPath path;
         double start = 0.0;
@@ -74,13 +75,31 @@ void bind_continuation(py::module_& m) {
           throw InputError("parameter: expected 'eccentricity' or 'k', found '" + parameter + "'");
         }
         const double centre = r.half_turns / (2.0 * r.periods);
-        return family_dict(resonance_family(path, start, end, r, line, centre));
+        const Family f = resonance_family(path, start, end, r, line, centre);
+        py::dict out = family_dict(f);
+        if (switch_branches) {
+          py::list branches;
+          for (std::size_t i = 0; i < f.events.size(); ++i) {
+            const BifurcationEvent& ev = f.events[i];
+            if (ev.type != BifurcationType::flip && ev.type != BifurcationType::branch_point)
+              continue;
+            py::dict b = family_dict(
+                resonance_branch(path, ev, std::min(start, end), std::max(start, end), r, line));
+            b["event"] = i;
+            b["type"] = to_string(ev.type);
+            branches.append(b);
+          }
+          out["branches"] = branches;
+        }
+        return out;
       },
       py::arg("eccentricity"), py::arg("k"), py::arg("parameter"), py::arg("end"), py::arg("p") = 1,
-      py::arg("q") = 1, py::arg("line") = 0.0,
+      py::arg("q") = 1, py::arg("line") = 0.0, py::arg("switch") = false,
       "The symmetric periodic solutions of the p:q resonance of Beletsky's equation on the line "
       "theta(0) = line, continued in 'eccentricity' or 'k' from the given value to `end` "
-      "(docs/continuation.md §2); values columns theta0, dtheta0.");
+      "(docs/continuation.md §2); values columns theta0, dtheta0. switch=True adds 'branches': "
+      "the family from each located flip (period-doubled) and branch point (asymmetric), each "
+      "with 'event' (its index in 'events') and 'type'.");
   m.def(
       "rotation_family",
       [](const Body& body, double lambda, double omega0, double omega1, std::optional<int> axis) {

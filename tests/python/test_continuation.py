@@ -34,6 +34,27 @@ def test_resonance_family_is_the_programs():
     assert list(f["parameter"]) == [q["parameter"] for q in j["points"]]
 
 
+def test_switch_gives_the_programs_branches(tmp_path):
+    f = newtop.resonance_family(0.25, 0.9, "eccentricity", 0.35, switch=True)
+    p = subprocess.run([EXE, "continue", os.path.join(ROOT, "examples", "continue_synchronous.toml"),
+                        "--family", "resonance", "--parameter", "orbit.eccentricity",
+                        "--range", "0.25:0.35", "--switch", "--json"],
+                       capture_output=True, text=True, check=True)
+    j = json.loads(p.stdout)
+    assert [b["event"] for b in f["branches"]] == [b["event"] for b in j["branches"]]
+    for b, jb in zip(f["branches"], j["branches"]):
+        assert b["type"] == jb["type"] == "flip"
+        assert list(b["parameter"]) == [q["parameter"] for q in jb["points"]]
+        assert np.all(b["period"] == 4 * math.pi)
+    from newtop import plot, results
+
+    out = tmp_path / "switch.json"
+    out.write_text(p.stdout)
+    fig = plot.figure(results.load(out))
+    labels = [ln.get_label() for ln in fig.axes[0].get_lines()]
+    assert "branch 1 (flip)" in labels and "branch 2 (flip)" in labels
+
+
 def test_rotation_family_finds_beletskys_threshold():
     body = newtop.Body.from_principal([1.0, 1.5, 2.2], 1.0, [0.0, 0.0, 0.0])
     r = newtop.rotation_family(body, 1.0, 0.1, 3.0)
