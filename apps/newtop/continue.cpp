@@ -14,7 +14,9 @@
 #include <sstream>
 
 #include "command.hpp"
+#include "newtop/analysis/rest_family.hpp"
 #include "newtop/analysis/rotation_family.hpp"
+#include "newtop/analysis/stability.hpp"
 #include "newtop/io/json.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
@@ -201,7 +203,44 @@ Run run_rotation(const ContinueArgs& a, double p0, double p1) {
   return {rotation_family(m, largest_axis(m.body), p0, p1), {"omega"}, {}, {}};
 }
 
+/// The equilibrium at rest of a fixed-point scenario (quadratic field) continued in a body or
+/// field key (docs/continuation.md §4b).
+Run run_rest(const ContinueArgs& a, double p0, double p1) {
+  const io::Scenario sc = io::load_scenario(a.scenario);
+  if (sc.model.kind() != FieldKind::quadratic) {
+    throw InputError(sc.source +
+                     ": [field]: expected the quadratic field for --family equilibrium");
+  }
+  const QuadraticModel& m = sc.model.quadratic();
+  QuadraticPath path;
+  try {
+    path = quadratic_path(m, a.parameter);
+  } catch (const InputError&) {
+    refuse_key(a,
+               "body.inertia[0..2], body.center_of_mass[0..2], body.mass, field.g or field.lambda "
+               "(fixed-point scenario)");
+  }
+  for (const double p : {p0, p1}) {
+    try {
+      path(p);
+    } catch (const InputError& e) {
+      throw InputError("--range: " + a.parameter + " = " + format_number(p) + ": " + e.what());
+    }
+  }
+  if (m.body.gyrostat() != Vec3::Zero() || sc.initial.m != Vec3::Zero() ||
+      !(fixed_point_residual(Model(m), sc.initial) <= kFixedPointTolerance)) {
+    throw InputError(sc.source +
+                     ": [initial]: expected an equilibrium at rest (omega = 0, gamma from "
+                     "newtop equilibria) of a body without gyrostat for --family equilibrium");
+  }
+  return {rest_family(path, sc.initial.gamma, p0, p1),
+          {"gamma_x", "gamma_y", "gamma_z", "kappa"},
+          {},
+          {}};
+}
+
 Run run_equilibrium(const ContinueArgs& a, double p0, double p1) {
+  if (!io::is_orbit_scenario(a.scenario)) return run_rest(a, p0, p1);
   const auto i = inertia_index(a.parameter);
   if (!i) refuse_key(a, "body.inertia[0..2]");
   const io::OrbitScenario sc = io::load_orbit_scenario(a.scenario);

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "newtop/analysis/rest_family.hpp"
 #include "newtop/orbit/orbit_families.hpp"
 #include "support/cli.hpp"
 
@@ -126,10 +127,34 @@ TEST(ContinueCli, SwitchContinuesTheBranchFromEachFlip) {
   EXPECT_EQ(n, rows);
 }
 
+TEST(ContinueCli, EquilibriumAtRestOfAFixedPointScenario) {
+  const auto r = test::run_newtop(" continue " + test::example_path("continue_rest.toml") +
+                                  " --family equilibrium --parameter body.center_of_mass[0]"
+                                  " --range 0.1:2 --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  const QuadraticModel m{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3(0.1, 0, 0)),
+                         QuadraticField{1.0, 1.0}};
+  const Family f =
+      rest_family(quadratic_path(m, "body.center_of_mass[0]"), Vec3::UnitX(), 0.1, 2.0);
+  ASSERT_EQ(j["points"].size(), f.points.size());
+  ASSERT_EQ(j["events"].size(), f.events.size());
+  for (std::size_t i = 0; i < f.events.size(); ++i) {
+    EXPECT_EQ(j["events"][i]["type"], to_string(f.events[i].type));
+    EXPECT_DOUBLE_EQ(j["events"][i]["value"].get<double>(), f.events[i].value);
+    EXPECT_DOUBLE_EQ(j["events"][i]["solution"]["kappa"].get<double>(),
+                     f.events[i].point.values[3]);
+  }
+  EXPECT_EQ(j["points"][0]["multipliers"].size(), 4u);
+  EXPECT_EQ(j["points"][0]["stability"], "minimum");
+}
+
 TEST(ContinueCli, BadInputIsOneLineAndWritesNothing) {
   const std::string csv = test::scratch_path("continue_cli", "bad.csv").string();
   const std::string res = " --family resonance --parameter orbit.eccentricity";
   const std::string beletsky = " continue " + test::example_path("stability_beletsky.toml");
+  const std::string rest =
+      " continue " + test::example_path("continue_rest.toml") + " --family equilibrium";
   for (const std::string& args : {
            kSynchronous + res + " --range 0.2:0.2",
            kSynchronous + res + " --range 0:x",
@@ -154,6 +179,11 @@ TEST(ContinueCli, BadInputIsOneLineAndWritesNothing) {
                       "body.inertia[0] --second-range 0.9:1.1",
            beletsky + " --family equilibrium --parameter body.inertia[0] --range 0.9:1.1",
            beletsky + " --family rotation --parameter stability.omega --range 0.1:3 --switch",
+           rest + " --parameter field.bogus --range 1:2",
+           rest + " --parameter body.inertia[0] --range 1:5",  // no body at 5
+           rest + " --parameter field.g --range 1:inf",
+           rest + " --parameter field.g --range 1:2 --line 0",
+           beletsky + " --family equilibrium --parameter field.g --range 1:2",  // not at rest
            kSynchronous + res +
                " --range 0:0.5 --switch --second body.inertia[0] --second-range 0.05:0.5",
        }) {
