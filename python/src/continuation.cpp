@@ -1,5 +1,5 @@
 // The continued families (docs/continuation.md): resonance_family, rotation_family,
-// equilibrium_family, each a dict of numpy arrays with the located events.
+// equilibrium_family, rest_family, each a dict of numpy arrays with the located events.
 
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
@@ -10,6 +10,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "newtop/analysis/rest_family.hpp"
 #include "newtop/analysis/rotation_family.hpp"
 #include "newtop/orbit/orbit_families.hpp"
 
@@ -111,6 +112,19 @@ void bind_continuation(py::module_& m) {
       py::arg("axis") = py::none(),
       "The spin about a principal axis (default the largest) pointing at the centre in Omega, "
       "with Krein collisions located (docs/continuation.md §3).");
+  m.def(
+      "rest_family",
+      [](const Body& body, double g, double lambda, const std::string& key, double p0, double p1,
+         const Eigen::Vector3d& gamma) {
+        const QuadraticModel model{body, QuadraticField{g, lambda}};
+        return family_dict(rest_family(quadratic_path(model, key), gamma, p0, p1));
+      },
+      py::arg("body"), py::arg("g"), py::arg("lambda_"), py::arg("key"), py::arg("p0"),
+      py::arg("p1"), py::arg("gamma"),
+      "The equilibrium at rest gamma of the fixed-point model in the quadratic field (g, lambda_) "
+      "continued in `key` (body.inertia[i], body.center_of_mass[i], body.mass, field.g, "
+      "field.lambda; its value in body/field replaced by p0) from p0 to p1 "
+      "(docs/continuation.md §4b); values columns gamma_x, gamma_y, gamma_z, kappa.");
   m.def(
       "equilibrium_family",
       [](const Eigen::Vector3d& inertia, int radial, int normal, int index, double p0, double p1) {

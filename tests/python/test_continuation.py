@@ -65,6 +65,19 @@ def test_rotation_family_finds_beletskys_threshold():
     assert np.all(np.iscomplexobj(r["multipliers"]))
 
 
+def test_rest_family_is_the_programs():
+    body = newtop.Body.from_principal([1.0, 1.5, 2.2], 1.0, [0.1, 0.0, 0.0])
+    f = newtop.rest_family(body, 1.0, 1.0, "body.center_of_mass[0]", 0.1, 2.0, [1.0, 0.0, 0.0])
+    p = subprocess.run([EXE, "continue", os.path.join(ROOT, "examples", "continue_rest.toml"),
+                        "--family", "equilibrium", "--parameter", "body.center_of_mass[0]",
+                        "--range", "0.1:2", "--json"], capture_output=True, text=True, check=True)
+    j = json.loads(p.stdout)
+    assert [e["value"] for e in f["events"]] == [e["value"] for e in j["events"]]
+    assert f["values"].shape == (len(j["points"]), 4)
+    assert f["events"][0]["value"] == pytest.approx(0.5, abs=1e-10)
+    assert f["stability"][0] == "minimum"
+
+
 def test_bad_input_is_value_error():
     with pytest.raises(ValueError, match="parameter"):
         newtop.resonance_family(0.0, 0.9, "omega", 0.6)
