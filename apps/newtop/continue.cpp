@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "command.hpp"
+#include "newtop/analysis/lyapunov_family.hpp"
 #include "newtop/analysis/rest_family.hpp"
 #include "newtop/analysis/rotation_family.hpp"
 #include "newtop/analysis/stability.hpp"
@@ -239,6 +240,36 @@ Run run_rest(const ContinueArgs& a, double p0, double p1) {
           {}};
 }
 
+/// The Lyapunov family of the scenario's stable equilibrium at rest, in the energy above it
+/// (docs/continuation.md §4c).
+Run run_periodic(const ContinueArgs& a, double p0, double p1) {
+  if (a.parameter != "energy") refuse_key(a, "energy (above the equilibrium's)");
+  if (!(p0 > 0) || !(p1 > 0)) {
+    throw InputError("--range: expected energies above the equilibrium's, A > 0 and B > 0, found " +
+                     a.range);
+  }
+  const io::Scenario sc = io::load_scenario(a.scenario);
+  if (sc.model.kind() != FieldKind::quadratic) {
+    throw InputError(sc.source + ": [field]: expected the quadratic field for --family periodic");
+  }
+  const QuadraticModel& m = sc.model.quadratic();
+  if (m.body.gyrostat() != Vec3::Zero() || sc.initial.m != Vec3::Zero() ||
+      !(fixed_point_residual(Model(m), sc.initial) <= kFixedPointTolerance)) {
+    throw InputError(sc.source +
+                     ": [initial]: expected an equilibrium at rest (omega = 0, gamma from "
+                     "newtop equilibria) of a body without gyrostat for --family periodic");
+  }
+  if (!linear_stability(Model(m), sc.initial).linearly_stable) {
+    throw InputError(sc.source +
+                     ": [initial]: expected a linearly stable equilibrium for "
+                     "--family periodic (its normal modes start the families)");
+  }
+  return {lyapunov_family(m, sc.initial.gamma, a.mode.value_or(0), p0, p1),
+          {"m_x", "m_y", "m_z", "gamma_x", "gamma_y", "gamma_z"},
+          {},
+          {}};
+}
+
 Run run_equilibrium(const ContinueArgs& a, double p0, double p1) {
   if (!io::is_orbit_scenario(a.scenario)) return run_rest(a, p0, p1);
   const auto i = inertia_index(a.parameter);
@@ -279,6 +310,13 @@ void check_options(const ContinueArgs& a) {
   if (a.switch_branches && a.second) {
     throw InputError("--switch: expected one of --switch and --second, found both");
   }
+  if (a.mode && a.family != "periodic") {
+    throw InputError("--mode: applies only to --family periodic, found --family " + a.family);
+  }
+  if (a.mode && *a.mode != 0 && *a.mode != 1) {
+    throw InputError("--mode: expected 0 (the lower normal frequency) or 1 (the higher), found " +
+                     std::to_string(*a.mode));
+  }
   if (a.family != "resonance" && (a.resonance || a.line)) {
     throw InputError(std::string(a.resonance ? "--resonance" : "--line") +
                      ": applies only to --family resonance, found --family " + a.family);
@@ -302,9 +340,7 @@ int run(const ContinueArgs& a) {
   } else if (a.family == "equilibrium") {
     r = run_equilibrium(a, p0, p1);
   } else if (a.family == "periodic") {
-    throw InputError(
-        "--family periodic: the Lyapunov families of the Euler-Poisson equations are "
-        "not available yet (resonance, equilibrium, rotation are)");
+    r = run_periodic(a, p0, p1);
   } else {
     throw InputError("--family: expected resonance, periodic, equilibrium or rotation, found '" +
                      a.family + "'");
@@ -314,7 +350,8 @@ int run(const ContinueArgs& a) {
 
 const RegisterCommand reg{Command{
     "continue",
-    "Continue a family (spin-orbit resonance, relative equilibrium, rotation) in one parameter "
+    "Continue a family (spin-orbit resonance, Lyapunov orbits, equilibrium, rotation) in one "
+    "parameter "
     "and locate its bifurcations",
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<ContinueArgs>();
@@ -331,6 +368,8 @@ const RegisterCommand reg{Command{
                      "second key: each event's locus continued in it (resonance)");
       sub.add_option("--second-range", a->second_range,
                      "C:D, about the scenario's value of the second key");
+      sub.add_option("--mode", a->mode,
+                     "normal mode of the equilibrium: 0 lower, 1 higher frequency (periodic)");
       sub.add_flag("--switch", a->switch_branches,
                    "continue the branch from each located flip and branch point (resonance)");
       sub.add_option("--out", a->out, "the family as CSV");

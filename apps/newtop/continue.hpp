@@ -17,6 +17,7 @@ struct ContinueArgs {
   std::optional<std::string> resonance, line, second, second_range, out;
   bool json = false;
   bool switch_branches = false;  // --switch
+  std::optional<int> mode;       // --mode (periodic)
 };
 
 /// A located event's locus in the second key (--second).

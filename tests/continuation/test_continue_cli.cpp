@@ -8,6 +8,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "newtop/analysis/lyapunov_family.hpp"
 #include "newtop/analysis/rest_family.hpp"
 #include "newtop/orbit/orbit_families.hpp"
 #include "support/cli.hpp"
@@ -149,12 +150,30 @@ TEST(ContinueCli, EquilibriumAtRestOfAFixedPointScenario) {
   EXPECT_EQ(j["points"][0]["stability"], "minimum");
 }
 
+TEST(ContinueCli, PeriodicIsTheLyapunovFamilyOfTheEquilibrium) {
+  const auto r = test::run_newtop(" continue " + test::example_path("continue_rest.toml") +
+                                  " --family periodic --parameter energy --range 1e-4:0.3"
+                                  " --mode 1 --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  const QuadraticModel m{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3(0.1, 0, 0)),
+                         QuadraticField{1.0, 1.0}};
+  const Family f = lyapunov_family(m, Vec3::UnitX(), 1, 1e-4, 0.3);
+  ASSERT_EQ(j["points"].size(), f.points.size());
+  ASSERT_EQ(j["events"].size(), f.events.size());
+  EXPECT_EQ(j["points"][0]["multipliers"].size(), 6u);
+  EXPECT_DOUBLE_EQ(j["points"].back()["period"].get<double>(), f.points.back().period);
+  EXPECT_DOUBLE_EQ(j["points"].back()["values"]["m_z"].get<double>(), f.points.back().values[2]);
+}
+
 TEST(ContinueCli, BadInputIsOneLineAndWritesNothing) {
   const std::string csv = test::scratch_path("continue_cli", "bad.csv").string();
   const std::string res = " --family resonance --parameter orbit.eccentricity";
   const std::string beletsky = " continue " + test::example_path("stability_beletsky.toml");
   const std::string rest =
       " continue " + test::example_path("continue_rest.toml") + " --family equilibrium";
+  const std::string periodic = " continue " + test::example_path("continue_rest.toml") +
+                               " --family periodic --parameter energy";
   for (const std::string& args : {
            kSynchronous + res + " --range 0.2:0.2",
            kSynchronous + res + " --range 0:x",
@@ -171,6 +190,13 @@ TEST(ContinueCli, BadInputIsOneLineAndWritesNothing) {
            kSynchronous + " --family resonance --parameter body.inertia[0] --range 0.1:3",
            kSynchronous + " --family bogus --parameter orbit.eccentricity --range 0:0.5",
            beletsky + " --family periodic --parameter stability.omega --range 0.1:3",
+           beletsky + " --family periodic --parameter energy --range 0.1:3",  // not at rest
+           rest + " --parameter energy --range 0.1:0.2",  // periodic's key for equilibrium
+           periodic + " --range 0:0.2",                   // energies above the equilibrium's
+           periodic + " --range 0.1:0.2 --mode 2",
+           periodic + " --range 0.1:0.2 --mode x",
+           periodic + " --range 0.1:0.2 --switch",
+           rest + " --parameter field.g --range 1:2 --mode 1",
            beletsky + " --family rotation --parameter stability.omega --range 0.1:3 --line 0",
            beletsky +
                " --family rotation --parameter stability.omega --range 0.1:3 --resonance 1:1",
