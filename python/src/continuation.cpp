@@ -1,5 +1,6 @@
 // The continued families (docs/continuation.md): resonance_family, rotation_family,
-// equilibrium_family, rest_family, each a dict of numpy arrays with the located events.
+// equilibrium_family, rest_family, lyapunov_family, each a dict of numpy arrays with the located
+// events.
 
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "newtop/analysis/lyapunov_family.hpp"
 #include "newtop/analysis/rest_family.hpp"
 #include "newtop/analysis/rotation_family.hpp"
 #include "newtop/orbit/orbit_families.hpp"
@@ -125,6 +127,18 @@ void bind_continuation(py::module_& m) {
       "continued in `key` (body.inertia[i], body.center_of_mass[i], body.mass, field.g, "
       "field.lambda; its value in body/field replaced by p0) from p0 to p1 "
       "(docs/continuation.md §4b); values columns gamma_x, gamma_y, gamma_z, kappa.");
+  m.def(
+      "lyapunov_family",
+      [](const Body& body, double g, double lambda, const Eigen::Vector3d& gamma, int mode,
+         double p0, double p1) {
+        const QuadraticModel model{body, QuadraticField{g, lambda}};
+        return family_dict(lyapunov_family(model, gamma, mode, p0, p1));
+      },
+      py::arg("body"), py::arg("g"), py::arg("lambda_"), py::arg("gamma"), py::arg("mode"),
+      py::arg("p0"), py::arg("p1"),
+      "The periodic orbits born from normal mode `mode` (0 lower, 1 higher frequency) of the "
+      "stable equilibrium at rest gamma, continued in the energy above it from p0 > 0 to p1 "
+      "(docs/continuation.md §4c); values columns m (3), gamma (3) at t = 0, six multipliers.");
   m.def(
       "equilibrium_family",
       [](const Eigen::Vector3d& inertia, int radial, int normal, int index, double p0, double p1) {

@@ -78,6 +78,17 @@ def test_rest_family_is_the_programs():
     assert f["stability"][0] == "minimum"
 
 
+def test_lyapunov_family_is_the_programs():
+    body = newtop.Body.from_principal([1.0, 1.5, 2.2], 1.0, [0.1, 0.0, 0.0])
+    f = newtop.lyapunov_family(body, 1.0, 1.0, [1.0, 0.0, 0.0], 1, 1e-4, 0.3)
+    p = subprocess.run([EXE, "continue", os.path.join(ROOT, "examples", "continue_rest.toml"),
+                        "--family", "periodic", "--parameter", "energy", "--range", "1e-4:0.3",
+                        "--mode", "1", "--json"], capture_output=True, text=True, check=True)
+    j = json.loads(p.stdout)
+    assert list(f["period"]) == [q["period"] for q in j["points"]]
+    assert f["multipliers"].shape == (len(j["points"]), 6)
+
+
 def test_bad_input_is_value_error():
     with pytest.raises(ValueError, match="parameter"):
         newtop.resonance_family(0.0, 0.9, "omega", 0.6)
