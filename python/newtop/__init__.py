@@ -19,6 +19,7 @@ try:  # the compiled extension, when the build made one (PYTHONPATH=build/python
     from ._newtop import (Body, InputError, MassModel, Model, QuadraticField, Scenario, State,  # noqa: F401
                           brun_state_at, conserved_integrals, equilibrium_family, integrate, is_orbit_scenario,
                           load_scenario, parse_scenario, resonance_family, rotation_family)
+    from ._newtop import lyapunov_family, rest_family  # noqa: F401  (docs/continuation.md)
     from ._newtop import integrals as integrals_at  # noqa: F401  (the library's, at a state)
     from ._newtop import (AnalyticResult, ChaosResult, Equilibria, Section,  # noqa: F401
                           StabilityReport)
