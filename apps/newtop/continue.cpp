@@ -264,7 +264,7 @@ Run run_periodic(const ContinueArgs& a, double p0, double p1) {
                      ": [initial]: expected a linearly stable equilibrium for "
                      "--family periodic (its normal modes start the families)");
   }
-  return {lyapunov_family(m, sc.initial.gamma, a.mode.value_or(0), p0, p1),
+  return {lyapunov_family(m, sc.initial.gamma, a.mode.value_or(1) - 1, p0, p1),
           {"m_x", "m_y", "m_z", "gamma_x", "gamma_y", "gamma_z"},
           {},
           {}};
@@ -312,10 +312,6 @@ void check_options(const ContinueArgs& a) {
   }
   if (a.mode && a.family != "periodic") {
     throw InputError("--mode: applies only to --family periodic, found --family " + a.family);
-  }
-  if (a.mode && *a.mode != 0 && *a.mode != 1) {
-    throw InputError("--mode: expected 0 (the lower normal frequency) or 1 (the higher), found " +
-                     std::to_string(*a.mode));
   }
   if (a.family != "resonance" && (a.resonance || a.line)) {
     throw InputError(std::string(a.resonance ? "--resonance" : "--line") +
@@ -368,8 +364,9 @@ const RegisterCommand reg{Command{
                      "second key: each event's locus continued in it (resonance)");
       sub.add_option("--second-range", a->second_range,
                      "C:D, about the scenario's value of the second key");
-      sub.add_option("--mode", a->mode,
-                     "normal mode of the equilibrium: 0 lower, 1 higher frequency (periodic)");
+      sub.add_option(
+          "--mode", a->mode,
+          "normal mode of the equilibrium: 1 lower, 2 higher frequency (periodic; default 1)");
       sub.add_flag("--switch", a->switch_branches,
                    "continue the branch from each located flip and branch point (resonance)");
       sub.add_option("--out", a->out, "the family as CSV");

@@ -153,7 +153,7 @@ TEST(ContinueCli, EquilibriumAtRestOfAFixedPointScenario) {
 TEST(ContinueCli, PeriodicIsTheLyapunovFamilyOfTheEquilibrium) {
   const auto r = test::run_newtop(" continue " + test::example_path("continue_rest.toml") +
                                   " --family periodic --parameter energy --range 1e-4:0.3"
-                                  " --mode 1 --json");
+                                  " --mode 2 --json");
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   const QuadraticModel m{Body::from_principal(Vec3(1.0, 1.5, 2.2), 1.0, Vec3(0.1, 0, 0)),
@@ -193,10 +193,11 @@ TEST(ContinueCli, BadInputIsOneLineAndWritesNothing) {
            beletsky + " --family periodic --parameter energy --range 0.1:3",  // not at rest
            rest + " --parameter energy --range 0.1:0.2",  // periodic's key for equilibrium
            periodic + " --range 0:0.2",                   // energies above the equilibrium's
-           periodic + " --range 0.1:0.2 --mode 2",
+           periodic + " --range 0.1:0.2 --mode 3",
+           periodic + " --range 0.1:0.2 --mode 0",
            periodic + " --range 0.1:0.2 --mode x",
            periodic + " --range 0.1:0.2 --switch",
-           rest + " --parameter field.g --range 1:2 --mode 1",
+           rest + " --parameter field.g --range 1:2 --mode 2",
            beletsky + " --family rotation --parameter stability.omega --range 0.1:3 --line 0",
            beletsky +
                " --family rotation --parameter stability.omega --range 0.1:3 --resonance 1:1",

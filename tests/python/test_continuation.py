@@ -83,7 +83,7 @@ def test_lyapunov_family_is_the_programs():
     f = newtop.lyapunov_family(body, 1.0, 1.0, [1.0, 0.0, 0.0], 1, 1e-4, 0.3)
     p = subprocess.run([EXE, "continue", os.path.join(ROOT, "examples", "continue_rest.toml"),
                         "--family", "periodic", "--parameter", "energy", "--range", "1e-4:0.3",
-                        "--mode", "1", "--json"], capture_output=True, text=True, check=True)
+                        "--mode", "2", "--json"], capture_output=True, text=True, check=True)
     j = json.loads(p.stdout)
     assert list(f["period"]) == [q["period"] for q in j["points"]]
     assert f["multipliers"].shape == (len(j["points"]), 6)
