@@ -14,10 +14,7 @@
 #include <sstream>
 
 #include "command.hpp"
-#include "newtop/analysis/lyapunov_family.hpp"
-#include "newtop/analysis/rest_family.hpp"
 #include "newtop/analysis/rotation_family.hpp"
-#include "newtop/analysis/stability.hpp"
 #include "newtop/io/json.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
@@ -202,72 +199,6 @@ Run run_rotation(const ContinueArgs& a, double p0, double p1) {
   }
   const QuadraticModel& m = sc.model.quadratic();
   return {rotation_family(m, largest_axis(m.body), p0, p1), {"omega"}, {}, {}};
-}
-
-/// The equilibrium at rest of a fixed-point scenario (quadratic field) continued in a body or
-/// field key (docs/continuation.md §4b).
-Run run_rest(const ContinueArgs& a, double p0, double p1) {
-  const io::Scenario sc = io::load_scenario(a.scenario);
-  if (sc.model.kind() != FieldKind::quadratic) {
-    throw InputError(sc.source +
-                     ": [field]: expected the quadratic field for --family equilibrium");
-  }
-  const QuadraticModel& m = sc.model.quadratic();
-  QuadraticPath path;
-  try {
-    path = quadratic_path(m, a.parameter);
-  } catch (const InputError&) {
-    refuse_key(a,
-               "body.inertia[0..2], body.center_of_mass[0..2], body.mass, field.g or field.lambda "
-               "(fixed-point scenario)");
-  }
-  for (const double p : {p0, p1}) {
-    try {
-      path(p);
-    } catch (const InputError& e) {
-      throw InputError("--range: " + a.parameter + " = " + format_number(p) + ": " + e.what());
-    }
-  }
-  if (m.body.gyrostat() != Vec3::Zero() || sc.initial.m != Vec3::Zero() ||
-      !(fixed_point_residual(Model(m), sc.initial) <= kFixedPointTolerance)) {
-    throw InputError(sc.source +
-                     ": [initial]: expected an equilibrium at rest (omega = 0, gamma from "
-                     "newtop equilibria) of a body without gyrostat for --family equilibrium");
-  }
-  return {rest_family(path, sc.initial.gamma, p0, p1),
-          {"gamma_x", "gamma_y", "gamma_z", "kappa"},
-          {},
-          {}};
-}
-
-/// The Lyapunov family of the scenario's stable equilibrium at rest, in the energy above it
-/// (docs/continuation.md §4c).
-Run run_periodic(const ContinueArgs& a, double p0, double p1) {
-  if (a.parameter != "energy") refuse_key(a, "energy (above the equilibrium's)");
-  if (!(p0 > 0) || !(p1 > 0)) {
-    throw InputError("--range: expected energies above the equilibrium's, A > 0 and B > 0, found " +
-                     a.range);
-  }
-  const io::Scenario sc = io::load_scenario(a.scenario);
-  if (sc.model.kind() != FieldKind::quadratic) {
-    throw InputError(sc.source + ": [field]: expected the quadratic field for --family periodic");
-  }
-  const QuadraticModel& m = sc.model.quadratic();
-  if (m.body.gyrostat() != Vec3::Zero() || sc.initial.m != Vec3::Zero() ||
-      !(fixed_point_residual(Model(m), sc.initial) <= kFixedPointTolerance)) {
-    throw InputError(sc.source +
-                     ": [initial]: expected an equilibrium at rest (omega = 0, gamma from "
-                     "newtop equilibria) of a body without gyrostat for --family periodic");
-  }
-  if (!linear_stability(Model(m), sc.initial).linearly_stable) {
-    throw InputError(sc.source +
-                     ": [initial]: expected a linearly stable equilibrium for "
-                     "--family periodic (its normal modes start the families)");
-  }
-  return {lyapunov_family(m, sc.initial.gamma, a.mode.value_or(1) - 1, p0, p1),
-          {"m_x", "m_y", "m_z", "gamma_x", "gamma_y", "gamma_z"},
-          {},
-          {}};
 }
 
 Run run_equilibrium(const ContinueArgs& a, double p0, double p1) {

@@ -41,6 +41,11 @@ struct Run {
   std::vector<Branch> branches;
 };
 
+/// The fixed-point scenario's equilibrium at rest in a body or field key, and the Lyapunov family
+/// of a stable one in the energy (continue_fixed.cpp).
+Run run_rest(const ContinueArgs& a, double p0, double p1);
+Run run_periodic(const ContinueArgs& a, double p0, double p1);
+
 /// Writes the CSV into `file` (when given) and commits it, then prints the JSON or the summary.
 int report(const ContinueArgs& a, const Run& r, double p0, double p1, io::AtomicFile* file);
 
