@@ -141,6 +141,7 @@ const std::vector<IntegerRange>& integer_ranges() {
   static const std::vector<IntegerRange> r{
       {"analytic", "samples", 1, 1'000'000},
       {"analytic", "dense", 2, 1'000'000},
+      {"continue", "mode", 1, 2},
       {"find-integrals", "degree", 1, 6},
       // The library bounds the points further, by the degree (kMaxConditionEntries entries).
       {"find-integrals", "points", 1, std::numeric_limits<int>::max()},

@@ -5,6 +5,7 @@
 
 #include "continue.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -177,8 +178,16 @@ Run run_resonance(const ContinueArgs& a, double p0, double p1) {
   std::optional<SecondAxis> second;
   if (a.second) second = check_second(a, sc.body.inertia(), base.eccentricity, p0);
   const double centre = r.half_turns / (2.0 * r.periods);
-  Run run{resonance_family(path, p0, p1, r, line, centre), {"theta0", "dtheta0"}, {}};
+  Run run{resonance_family(path, p0, p1, r, line, centre), {"theta0", "dtheta0"}, {}, {}};
   if (second) run.boundaries = boundaries(*second, run.family, r, line);
+  if (a.switch_branches) {
+    for (std::size_t i = 0; i < run.family.events.size(); ++i) {
+      const BifurcationEvent& ev = run.family.events[i];
+      if (ev.type != BifurcationType::flip && ev.type != BifurcationType::branch_point) continue;
+      run.branches.push_back(
+          {i, resonance_branch(path, ev, std::min(p0, p1), std::max(p0, p1), r, line)});
+    }
+  }
   return run;
 }
 
@@ -189,10 +198,11 @@ Run run_rotation(const ContinueArgs& a, double p0, double p1) {
     throw InputError(sc.source + ": [field]: expected the quadratic field for --family rotation");
   }
   const QuadraticModel& m = sc.model.quadratic();
-  return {rotation_family(m, largest_axis(m.body), p0, p1), {"omega"}, {}};
+  return {rotation_family(m, largest_axis(m.body), p0, p1), {"omega"}, {}, {}};
 }
 
 Run run_equilibrium(const ContinueArgs& a, double p0, double p1) {
+  if (!io::is_orbit_scenario(a.scenario)) return run_rest(a, p0, p1);
   const auto i = inertia_index(a.parameter);
   if (!i) refuse_key(a, "body.inertia[0..2]");
   const io::OrbitScenario sc = io::load_orbit_scenario(a.scenario);
@@ -212,7 +222,8 @@ Run run_equilibrium(const ContinueArgs& a, double p0, double p1) {
                      ": [initial]: expected a relative equilibrium with the radius and "
                      "the orbit normal along principal axes (at rest in the orbital frame)");
   }
-  return {equilibrium_family(sc.body.inertia(), radial, normal, *i, p0, p1), {"A", "B", "C"}, {}};
+  return {
+      equilibrium_family(sc.body.inertia(), radial, normal, *i, p0, p1), {"A", "B", "C"}, {}, {}};
 }
 
 /// The options that apply only to some families, checked before any work.
@@ -223,6 +234,15 @@ void check_options(const ContinueArgs& a) {
   }
   if (a.second && a.family != "resonance") {
     throw InputError("--second: applies only to --family resonance, found --family " + a.family);
+  }
+  if (a.switch_branches && a.family != "resonance") {
+    throw InputError("--switch: applies only to --family resonance, found --family " + a.family);
+  }
+  if (a.switch_branches && a.second) {
+    throw InputError("--switch: expected one of --switch and --second, found both");
+  }
+  if (a.mode && a.family != "periodic") {
+    throw InputError("--mode: applies only to --family periodic, found --family " + a.family);
   }
   if (a.family != "resonance" && (a.resonance || a.line)) {
     throw InputError(std::string(a.resonance ? "--resonance" : "--line") +
@@ -247,9 +267,7 @@ int run(const ContinueArgs& a) {
   } else if (a.family == "equilibrium") {
     r = run_equilibrium(a, p0, p1);
   } else if (a.family == "periodic") {
-    throw InputError(
-        "--family periodic: the Lyapunov families of the Euler-Poisson equations are "
-        "not available yet (resonance, equilibrium, rotation are)");
+    r = run_periodic(a, p0, p1);
   } else {
     throw InputError("--family: expected resonance, periodic, equilibrium or rotation, found '" +
                      a.family + "'");
@@ -259,7 +277,8 @@ int run(const ContinueArgs& a) {
 
 const RegisterCommand reg{Command{
     "continue",
-    "Continue a family (spin-orbit resonance, relative equilibrium, rotation) in one parameter "
+    "Continue a family (spin-orbit resonance, Lyapunov orbits, equilibrium, rotation) in one "
+    "parameter "
     "and locate its bifurcations",
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<ContinueArgs>();
@@ -276,6 +295,11 @@ const RegisterCommand reg{Command{
                      "second key: each event's locus continued in it (resonance)");
       sub.add_option("--second-range", a->second_range,
                      "C:D, about the scenario's value of the second key");
+      sub.add_option(
+          "--mode", a->mode,
+          "normal mode of the equilibrium: 1 lower, 2 higher frequency (periodic; default 1)");
+      sub.add_flag("--switch", a->switch_branches,
+                   "continue the branch from each located flip and branch point (resonance)");
       sub.add_option("--out", a->out, "the family as CSV");
       sub.add_flag("--json", a->json, "print one JSON object");
       return [a] { return run(*a); };

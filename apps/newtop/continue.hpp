@@ -16,6 +16,8 @@ struct ContinueArgs {
   std::string scenario, family, parameter, range;
   std::optional<std::string> resonance, line, second, second_range, out;
   bool json = false;
+  bool switch_branches = false;  // --switch
+  std::optional<int> mode;       // --mode (periodic)
 };
 
 /// A located event's locus in the second key (--second).
@@ -25,12 +27,24 @@ struct Boundary {
   std::string end;
 };
 
-/// The family computed, the names of its values, and the boundaries.
+/// The family that leaves a located flip or branch point (--switch).
+struct Branch {
+  std::size_t event = 0;  // its index in Family::events
+  Family family;
+};
+
+/// The family computed, the names of its values, the boundaries and the branches.
 struct Run {
   Family family;
   std::vector<std::string> names;  // of FamilyPoint::values
   std::vector<Boundary> boundaries;
+  std::vector<Branch> branches;
 };
+
+/// The fixed-point scenario's equilibrium at rest in a body or field key, and the Lyapunov family
+/// of a stable one in the energy (continue_fixed.cpp).
+Run run_rest(const ContinueArgs& a, double p0, double p1);
+Run run_periodic(const ContinueArgs& a, double p0, double p1);
 
 /// Writes the CSV into `file` (when given) and commits it, then prints the JSON or the summary.
 int report(const ContinueArgs& a, const Run& r, double p0, double p1, io::AtomicFile* file);

@@ -33,15 +33,10 @@ void write_boundaries_csv(std::ostream& o, const Run& r, const ContinueArgs& a) 
   }
 }
 
-void write_csv(std::ostream& o, const Run& r) {
-  o << "parameter";
-  for (const auto& n : r.names) o << ',' << n;
-  o << ",period";
-  const std::size_t m = r.family.points.empty() ? 0 : r.family.points[0].multipliers.size();
-  for (std::size_t k = 1; k <= m; ++k) o << ",multiplier" << k << "_re,multiplier" << k << "_im";
-  o << ",stability\n";
-  for (const FamilyPoint& p : r.family.points) {
-    o << format_number(p.parameter);
+/// The family's rows, after `prefix` (the branch column with --switch).
+void write_rows(std::ostream& o, const Family& f, const std::string& prefix) {
+  for (const FamilyPoint& p : f.points) {
+    o << prefix << format_number(p.parameter);
     for (Eigen::Index k = 0; k < p.values.size(); ++k) o << ',' << format_number(p.values[k]);
     o << ',' << format_number(p.period);
     for (const auto& z : p.multipliers)
@@ -50,17 +45,40 @@ void write_csv(std::ostream& o, const Run& r) {
   }
 }
 
-/// The JSON object of docs/continuation.md §5 (without `csv`).
-io::Json family_json(const ContinueArgs& a, const Run& r, double p0, double p1) {
-  io::Json points = io::Json::array(), events = io::Json::array();
-  for (const FamilyPoint& p : r.family.points) points.push_back(point_json(p, r.names));
-  for (const BifurcationEvent& e : r.family.events) {
-    const io::Json pj = point_json(e.point, r.names);
+void write_csv(std::ostream& o, const Run& r, bool branches) {
+  if (branches) o << "branch,";
+  o << "parameter";
+  for (const auto& n : r.names) o << ',' << n;
+  o << ",period";
+  const std::size_t m = r.family.points.empty() ? 0 : r.family.points[0].multipliers.size();
+  for (std::size_t k = 1; k <= m; ++k) o << ",multiplier" << k << "_re,multiplier" << k << "_im";
+  o << ",stability\n";
+  if (!branches) {
+    write_rows(o, r.family, "");
+    return;
+  }
+  write_rows(o, r.family, "0,");
+  for (std::size_t i = 0; i < r.branches.size(); ++i)
+    write_rows(o, r.branches[i].family, std::to_string(i + 1) + ",");
+}
+
+io::Json events_json(const Family& f, const std::vector<std::string>& names) {
+  io::Json events = io::Json::array();
+  for (const BifurcationEvent& e : f.events) {
+    const io::Json pj = point_json(e.point, names);
     events.push_back({{"type", to_string(e.type)},
                       {"value", e.value},
                       {"solution", pj["values"]},
                       {"multipliers", pj["multipliers"]}});
   }
+  return events;
+}
+
+/// The JSON object of docs/continuation.md §5 (without `csv`).
+io::Json family_json(const ContinueArgs& a, const Run& r, double p0, double p1) {
+  io::Json points = io::Json::array();
+  for (const FamilyPoint& p : r.family.points) points.push_back(point_json(p, r.names));
+  const io::Json events = events_json(r.family, r.names);
   io::Json j{{"scenario", a.scenario}, {"family", a.family},  {"parameter", a.parameter},
              {"range", {p0, p1}},      {"end", r.family.end}, {"points", points},
              {"events", events}};
@@ -80,6 +98,19 @@ io::Json family_json(const ContinueArgs& a, const Run& r, double p0, double p1) 
     j["second"] = *a.second;
     j["boundaries"] = bs;
   }
+  if (a.switch_branches) {
+    io::Json bs = io::Json::array();
+    for (const Branch& b : r.branches) {
+      io::Json pts = io::Json::array();
+      for (const FamilyPoint& p : b.family.points) pts.push_back(point_json(p, r.names));
+      bs.push_back({{"event", b.event},
+                    {"type", to_string(r.family.events[b.event].type)},
+                    {"end", b.family.end},
+                    {"points", pts},
+                    {"events", events_json(b.family, r.names)}});
+    }
+    j["branches"] = bs;
+  }
   return j;
 }
 
@@ -90,7 +121,7 @@ int report(const ContinueArgs& a, const Run& r, double p0, double p1, io::Atomic
     if (a.second) {
       write_boundaries_csv(file->stream(), r, a);
     } else {
-      write_csv(file->stream(), r);
+      write_csv(file->stream(), r, a.switch_branches);
     }
     file->commit();
   }
@@ -110,6 +141,17 @@ int report(const ContinueArgs& a, const Run& r, double p0, double p1, io::Atomic
   for (const Boundary& b : r.boundaries) {
     std::cout << "  " << to_string(b.type) << " curve in " << *a.second << ": " << b.points.size()
               << " points (" << b.end << ")\n";
+  }
+  for (std::size_t i = 0; i < r.branches.size(); ++i) {
+    const Branch& b = r.branches[i];
+    const BifurcationEvent& from = r.family.events[b.event];
+    std::cout << "  branch " << i + 1 << " from the " << to_string(from.type) << " at "
+              << a.parameter << " = " << format_number(from.value) << ": " << b.family.points.size()
+              << " points, ended: " << b.family.end << "\n";
+    for (const BifurcationEvent& e : b.family.events) {
+      std::cout << "    " << to_string(e.type) << " at " << a.parameter << " = "
+                << format_number(e.value) << "\n";
+    }
   }
   if (a.out) std::cout << (a.second ? "boundaries" : "family") << " written to " << *a.out << "\n";
   return kExitOk;

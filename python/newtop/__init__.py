@@ -20,6 +20,7 @@ try:  # the compiled extension, when the build made one (PYTHONPATH=build/python
                           brun_state_at, conserved_integrals, equilibrium_family, integrate,
                           integrate_ensemble, chaos_ensemble, is_orbit_scenario,
                           load_scenario, parse_scenario, resonance_family, rotation_family)
+    from ._newtop import lyapunov_family, rest_family  # noqa: F401  (docs/continuation.md)
     from ._newtop import integrals as integrals_at  # noqa: F401  (the library's, at a state)
     from ._newtop import (AnalyticResult, ChaosResult, Equilibria, Section,  # noqa: F401
                           StabilityReport)

@@ -1,6 +1,7 @@
 """The bifurcation diagram of a continued family (``newtop continue --json``, docs/continuation.md):
 a defining value against the parameter, stable and unstable stretches apart, the located events
-marked; with ``--second``, the events' curves in the plane of the two keys (the stability chart)."""
+marked; with ``--switch``, the branches from the flips and branch points dashed; with ``--second``,
+the events' curves in the plane of the two keys (the stability chart)."""
 
 from __future__ import annotations
 
@@ -37,6 +38,16 @@ def continuation_figure(res: Result):
     stable = np.array([q["stability"] in STABLE for q in points])
     for mask, colour, label in ((stable, "C0", "stable"), (~stable, "C3", "unstable")):
         ax.plot(np.where(mask, p, np.nan), np.where(mask, v, np.nan), color=colour, label=label)
+    for i, b in enumerate(d.get("branches", [])):
+        bp = np.array([q["parameter"] for q in b["points"]])
+        bv = np.array([q["values"][name] for q in b["points"]])
+        bs = np.array([q["stability"] in STABLE for q in b["points"]])
+        for mask, colour in ((bs, "C0"), (~bs, "C3")):
+            ax.plot(np.where(mask, bp, np.nan), np.where(mask, bv, np.nan), color=colour,
+                    linestyle="--", label=f"branch {i + 1} ({b['type']})" if mask is bs else None)
+        for e in b["events"]:
+            y = e["solution"].get(name, np.nan)
+            ax.plot(e["value"], y, EVENT_MARKERS.get(e["type"], "x"), color="0.4", mfc="none")
     for e in d["events"]:
         y = e["solution"].get(name, np.nan)
         ax.plot(e["value"], y, EVENT_MARKERS.get(e["type"], "x"), color="k", mfc="none")

@@ -1,14 +1,18 @@
 // The continued families (docs/continuation.md): resonance_family, rotation_family,
-// equilibrium_family, each a dict of numpy arrays with the located events.
+// equilibrium_family, rest_family, lyapunov_family, each a dict of numpy arrays with the located
+// events.
 
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 
 #include "bindings.hpp"
+#include "newtop/analysis/lyapunov_family.hpp"
+#include "newtop/analysis/rest_family.hpp"
 #include "newtop/analysis/rotation_family.hpp"
 #include "newtop/orbit/orbit_families.hpp"
 
@@ -60,7 +64,7 @@ void bind_continuation(py::module_& m) {
   m.def(
       "resonance_family",
       [](double eccentricity, double k, const std::string& parameter, double end, int p, int q,
-         double line) {
+         double line, bool switch_branches) {
         const SpinOrbitResonance r = resonance(p, q);
         PitchPath path;
         double start = 0.0;
@@ -74,13 +78,31 @@ void bind_continuation(py::module_& m) {
           throw InputError("parameter: expected 'eccentricity' or 'k', found '" + parameter + "'");
         }
         const double centre = r.half_turns / (2.0 * r.periods);
-        return family_dict(resonance_family(path, start, end, r, line, centre));
+        const Family f = resonance_family(path, start, end, r, line, centre);
+        py::dict out = family_dict(f);
+        if (switch_branches) {
+          py::list branches;
+          for (std::size_t i = 0; i < f.events.size(); ++i) {
+            const BifurcationEvent& ev = f.events[i];
+            if (ev.type != BifurcationType::flip && ev.type != BifurcationType::branch_point)
+              continue;
+            py::dict b = family_dict(
+                resonance_branch(path, ev, std::min(start, end), std::max(start, end), r, line));
+            b["event"] = i;
+            b["type"] = to_string(ev.type);
+            branches.append(b);
+          }
+          out["branches"] = branches;
+        }
+        return out;
       },
       py::arg("eccentricity"), py::arg("k"), py::arg("parameter"), py::arg("end"), py::arg("p") = 1,
-      py::arg("q") = 1, py::arg("line") = 0.0,
+      py::arg("q") = 1, py::arg("line") = 0.0, py::arg("switch") = false,
       "The symmetric periodic solutions of the p:q resonance of Beletsky's equation on the line "
       "theta(0) = line, continued in 'eccentricity' or 'k' from the given value to `end` "
-      "(docs/continuation.md §2); values columns theta0, dtheta0.");
+      "(docs/continuation.md §2); values columns theta0, dtheta0. switch=True adds 'branches': "
+      "the family from each located flip (period-doubled) and branch point (asymmetric), each "
+      "with 'event' (its index in 'events') and 'type'.");
   m.def(
       "rotation_family",
       [](const Body& body, double lambda, double omega0, double omega1, std::optional<int> axis) {
@@ -92,6 +114,31 @@ void bind_continuation(py::module_& m) {
       py::arg("axis") = py::none(),
       "The spin about a principal axis (default the largest) pointing at the centre in Omega, "
       "with Krein collisions located (docs/continuation.md §3).");
+  m.def(
+      "rest_family",
+      [](const Body& body, double g, double lambda, const std::string& key, double p0, double p1,
+         const Eigen::Vector3d& gamma) {
+        const QuadraticModel model{body, QuadraticField{g, lambda}};
+        return family_dict(rest_family(quadratic_path(model, key), gamma, p0, p1));
+      },
+      py::arg("body"), py::arg("g"), py::arg("lambda_"), py::arg("key"), py::arg("p0"),
+      py::arg("p1"), py::arg("gamma"),
+      "The equilibrium at rest gamma of the fixed-point model in the quadratic field (g, lambda_) "
+      "continued in `key` (body.inertia[i], body.center_of_mass[i], body.mass, field.g, "
+      "field.lambda; its value in body/field replaced by p0) from p0 to p1 "
+      "(docs/continuation.md §4b); values columns gamma_x, gamma_y, gamma_z, kappa.");
+  m.def(
+      "lyapunov_family",
+      [](const Body& body, double g, double lambda, const Eigen::Vector3d& gamma, int mode,
+         double p0, double p1) {
+        const QuadraticModel model{body, QuadraticField{g, lambda}};
+        return family_dict(lyapunov_family(model, gamma, mode, p0, p1));
+      },
+      py::arg("body"), py::arg("g"), py::arg("lambda_"), py::arg("gamma"), py::arg("mode"),
+      py::arg("p0"), py::arg("p1"),
+      "The periodic orbits born from normal mode `mode` (0 lower, 1 higher frequency) of the "
+      "stable equilibrium at rest gamma, continued in the energy above it from p0 > 0 to p1 "
+      "(docs/continuation.md §4c); values columns m (3), gamma (3) at t = 0, six multipliers.");
   m.def(
       "equilibrium_family",
       [](const Eigen::Vector3d& inertia, int radial, int normal, int index, double p0, double p1) {

@@ -125,6 +125,12 @@ class Curve {
     if (f.values.size() == 0) f.values = x.head(n());
     f.parameter = x[n()];
     f.tangent_parameter = t[n()];
+    if (pr_.branch_points) {  // det [F_u F_p; tᵀ]: changes sign at a branch point, not at a fold
+      MatrixXd a(n() + 1, n() + 1);
+      a.topRows(n()) = jacobian(x);
+      a.row(n()) = t.transpose();
+      f.tests.push_back(a.determinant());
+    }
     return f;
   }
 
@@ -145,7 +151,7 @@ void locate_events(const Curve& c, const VectorXd& xa, const FamilyPoint& fa, co
   if (!(length > 0)) return;
   const VectorXd d = (xb - xa) / length;
   const int count = static_cast<int>(c.problem().tests.size());
-  for (int j = -1; j < count; ++j) {
+  for (int j = -1; j < count + (c.problem().branch_points ? 1 : 0); ++j) {
     const double ga = test_value(fa, j), gb = test_value(fb, j);
     if (!(std::isfinite(ga) && std::isfinite(gb)) || ga == 0 || (ga < 0) == (gb < 0)) continue;
     FamilyPoint at;
@@ -164,8 +170,11 @@ void locate_events(const Curve& c, const VectorXd& xa, const FamilyPoint& fa, co
       root = 0.5 * (r.first + r.second);
     }
     if (!std::isfinite(g(root))) continue;
-    const BifurcationType type = j < 0 ? BifurcationType::fold : c.problem().tests[j].type;
-    if (j >= 0 && c.problem().tests[j].confirm && !c.problem().tests[j].confirm(at)) continue;
+    const bool own = j >= 0 && j < count;  // one of the family's tests, not the fold or the BP
+    const BifurcationType type = j < 0 ? BifurcationType::fold
+                                 : own ? c.problem().tests[j].type
+                                       : BifurcationType::branch_point;
+    if (own && c.problem().tests[j].confirm && !c.problem().tests[j].confirm(at)) continue;
     events.push_back({type, at.parameter, at});
   }
 }
@@ -175,6 +184,92 @@ bool solve_at(const Curve& c, VectorXd& x) {
   VectorXd normal = VectorXd::Zero(c.n() + 1);
   normal[c.n()] = 1.0;
   return c.correct(x, normal, x).has_value();
+}
+
+/// Where the march ends: past p_end with the last point exactly there (`range`); past p0 either
+/// with no point there (`left_range`, a family) or with the last point exactly there (`range`,
+/// a branch: both ends of the range are ends); at a branch point of the branch (`branch_point`).
+struct Ends {
+  double p0 = 0.0, p_end = 0.0;
+  bool both_exact = false;
+  bool stop_at_branch_point = false;
+};
+
+/// Predictor–corrector steps from the accepted point x (tangent t, already the family's last
+/// point) until an end.
+void march(const Curve& c, VectorXd x, VectorXd t, const Ends& ends, Family& fam) {
+  const ContinuationSettings& settings = c.settings();
+  const int n = c.n();
+  const double dir = ends.p_end > ends.p0 ? 1.0 : -1.0;
+  double h = settings.initial_step;
+  fam.end = "max_points";
+  while (static_cast<int>(fam.points.size()) < settings.max_points) {
+    VectorXd y = x + h * t;
+    if (!ends.both_exact && (y[n] - ends.p0) * dir < 0) {  // the predictor turned back
+      fam.end = "left_range";
+      break;
+    }
+    if (ends.both_exact) {  // a branch's predictor past an end: the end itself at fixed p
+      for (const double bound : {ends.p0, ends.p_end}) {
+        if ((y[n] - bound) * (bound == ends.p0 ? -dir : dir) <= 0) continue;
+        y = x + (bound - x[n]) / (y[n] - x[n]) * (y - x);
+        y[n] = bound;
+        break;
+      }
+    }
+    const bool at_end = ends.both_exact && (y[n] == ends.p0 || y[n] == ends.p_end);
+    const std::optional<int> its =
+        at_end ? (solve_at(c, y) ? std::optional<int>(1) : std::nullopt) : c.correct(y, t, y);
+    const VectorXd ty = its ? c.tangent(y, t) : t;
+    const bool turned = its && std::acos(std::clamp(ty.dot(t), -1.0, 1.0)) > settings.max_angle;
+    if (!its || turned) {
+      h /= 2;
+      if (h < settings.min_step) {
+        fam.end = "step_underflow";
+        break;
+      }
+      continue;
+    }
+    const double p = y[n];
+    if (!ends.both_exact && (p - ends.p0) * dir < 0) {  // turned back past the start
+      fam.end = "left_range";
+      break;
+    }
+    bool last = false;
+    for (const double bound : {ends.p_end, ends.p0}) {
+      const double side = bound == ends.p_end ? dir : -dir;
+      if (last || (bound == ends.p0 && !ends.both_exact) || (p - bound) * side < 0) continue;
+      // past an end: the last point exactly there
+      const double w = (bound - x[n]) / (p - x[n]);
+      y = x + w * (y - x);
+      y[n] = bound;
+      if (!solve_at(c, y)) {
+        fam.end = "step_underflow";
+        return;
+      }
+      last = true;
+    }
+    const VectorXd t_new = c.tangent(y, t);
+    FamilyPoint fy = c.evaluate(y, t_new);
+    const std::size_t before = fam.events.size();
+    locate_events(c, x, fam.points.back(), y, fy, fam.events);
+    fam.points.push_back(std::move(fy));
+    x = y;
+    t = t_new;
+    if (last) {
+      fam.end = "range";
+      break;
+    }
+    if (ends.stop_at_branch_point &&
+        std::any_of(
+            fam.events.begin() + static_cast<std::ptrdiff_t>(before), fam.events.end(),
+            [](const BifurcationEvent& e) { return e.type == BifurcationType::branch_point; })) {
+      fam.end = "branch_point";
+      break;
+    }
+    if (*its <= 2) h = std::min(1.5 * h, settings.max_step);
+    if (*its >= 5) h *= 0.7;
+  }
 }
 
 }  // namespace
@@ -199,57 +294,49 @@ Family continue_family(const ContinuationProblem& problem, const VectorXd& u0, d
   }
   VectorXd axis = VectorXd::Zero(n + 1);
   axis[n] = dir;
-  VectorXd t = c.tangent(x, axis);
+  const VectorXd t = c.tangent(x, axis);
   Family fam;
   fam.points.push_back(c.evaluate(x, t));
-  double h = settings.initial_step;
-  fam.end = "max_points";
-  while (static_cast<int>(fam.points.size()) < settings.max_points) {
-    VectorXd y = x + h * t;
-    if ((y[n] - p0) * dir < 0) {  // the predictor turned back past the start
-      fam.end = "left_range";
-      break;
-    }
-    const std::optional<int> its = c.correct(y, t, y);
-    const VectorXd ty = its ? c.tangent(y, t) : t;
-    const bool turned = its && std::acos(std::clamp(ty.dot(t), -1.0, 1.0)) > settings.max_angle;
-    if (!its || turned) {
-      h /= 2;
-      if (h < settings.min_step) {
-        fam.end = "step_underflow";
-        break;
-      }
-      continue;
-    }
-    const double p = y[n];
-    if ((p - p0) * dir < 0) {  // turned back past the start
-      fam.end = "left_range";
-      break;
-    }
-    bool last = false;
-    if ((p - p_end) * dir >= 0) {  // past the end: the last point exactly at p_end
-      const double w = (p_end - x[n]) / (p - x[n]);
-      y = x + w * (y - x);
-      y[n] = p_end;
-      if (!solve_at(c, y)) {
-        fam.end = "step_underflow";
-        break;
-      }
-      last = true;
-    }
-    const VectorXd t_new = c.tangent(y, t);
-    FamilyPoint fy = c.evaluate(y, t_new);
-    locate_events(c, x, fam.points.back(), y, fy, fam.events);
-    fam.points.push_back(std::move(fy));
-    x = y;
-    t = t_new;
-    if (last) {
-      fam.end = "range";
-      break;
-    }
-    if (*its <= 2) h = std::min(1.5 * h, settings.max_step);
-    if (*its >= 5) h *= 0.7;
+  march(c, x, t, {p0, p_end, false, false}, fam);
+  return fam;
+}
+
+Family continue_branch(const ContinuationProblem& problem, const VectorXd& u_star, double p_star,
+                       const VectorXd& direction, double p_min, double p_max,
+                       const ContinuationSettings& settings) {
+  const int n = problem.unknowns;
+  if (n < 1 || u_star.size() != n || direction.size() != n + 1 || !u_star.allFinite() ||
+      !direction.allFinite() || !(direction.norm() > 0) || !std::isfinite(p_star) ||
+      !(p_min < p_max) || p_star < p_min || p_star > p_max) {
+    throw InputError("branch: expected a finite branch point of " + std::to_string(n) +
+                     " values in [p_min, p_max] and a nonzero direction of " +
+                     std::to_string(n + 1));
   }
+  ContinuationProblem pr = problem;
+  pr.branch_points = true;
+  const Curve c(pr, settings);
+  VectorXd star(n + 1);
+  star << u_star, p_star;
+  const VectorXd d = direction.normalized();
+  // The first point of the branch: the branch point moved by the switching step along the new
+  // branch's direction, corrected on the hyperplane orthogonal to it (Keller 1977; AUTO's ISW).
+  // Near the branch point [F_u F_p; dᵀ] is ill-conditioned (its least singular value is of the
+  // order of the switching step), which magnifies the residual's round-off in the corrections:
+  // this first correction may take four times the iterations.
+  ContinuationSettings first = settings;
+  first.max_newton *= 4;
+  VectorXd x = star + settings.switch_step * d;
+  if (!Curve(pr, first).correct(x, d, x)) {
+    throw InputError("branch: Newton's method found no point of the new branch at " +
+                     format_number(settings.switch_step) +
+                     " from the branch point at p = " + format_number(p_star));
+  }
+  Family fam;
+  fam.points.push_back(c.evaluate(star, d));
+  const VectorXd t = c.tangent(x, d);
+  fam.points.push_back(c.evaluate(x, t));
+  const double p_end = t[n] >= 0 ? p_max : p_min;
+  march(c, x, t, {p_end == p_max ? p_min : p_max, p_end, true, true}, fam);
   return fam;
 }
 

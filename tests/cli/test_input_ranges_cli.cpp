@@ -60,6 +60,7 @@ std::string rest(const std::string& sub) {
   if (sub == "view") return " trajectory.csv -o page.html";
   if (sub == "section") return " scenario.toml --surface 'gamma3 = 0'";
   if (sub == "sweep") return " sweep.toml";
+  if (sub == "continue") return " scenario.toml --family periodic --parameter energy --range 1:2";
   return " scenario.toml";
 }
 

@@ -66,6 +66,10 @@ struct ContinuationProblem {
   /// Period, multipliers, stability and test function values at a solution.
   std::function<FamilyPoint(const Eigen::VectorXd& u, double p)> evaluate;
   std::vector<TestFunction> tests;  ///< the fold (dp/ds) is always tested besides these
+  /// Also test det [F_u F_p; tᵀ] (appended to FamilyPoint::tests), which changes sign where
+  /// another family crosses (a branch point) but not at a fold (AUTO's test for algebraic
+  /// problems); set by continue_branch.
+  bool branch_points = false;
 };
 
 struct ContinuationSettings {
@@ -75,7 +79,8 @@ struct ContinuationSettings {
   double max_angle = 0.2;  ///< radians between successive tangents before the step is halved
   int max_points = 5000;
   int max_newton = 8;
-  double tolerance = 1e-12;  ///< max |F| and max |ΔX| of the corrector
+  double tolerance = 1e-12;   ///< max |F| and max |ΔX| of the corrector
+  double switch_step = 1e-3;  ///< continue_branch: the first step off the branch point
 };
 
 /// The family from p0 towards p_end (p0 ≠ p_end): the points in arclength order, the located
@@ -84,7 +89,8 @@ struct Family {
   std::vector<FamilyPoint> points;
   std::vector<BifurcationEvent> events;
   /// "range" (reached p_end, the last point exactly there), "left_range" (turned back past p0),
-  /// "step_underflow" (the corrector failed at min_step), "max_points".
+  /// "step_underflow" (the corrector failed at min_step), "max_points"; a branch also
+  /// "branch_point" (it met another family: the branch-point test changed sign on it).
   std::string end;
 };
 
@@ -92,5 +98,18 @@ struct Family {
 /// InputError when that fails or an input is not finite).
 Family continue_family(const ContinuationProblem& problem, const Eigen::VectorXd& u0, double p0,
                        double p_end, const ContinuationSettings& settings = {});
+
+/// Branch switching (Keller 1977; AUTO's ISW = −1, MATCONT's BP continuation): the family that
+/// leaves the branch point (u*, p*) of `problem` along `direction` (n + 1 values, a null vector
+/// of [F_u F_p] there: for a pitchfork, as at a flip in the doubled period or at a symmetry
+/// breaking, (v, 0) with v the critical eigenvector). The first point is the branch point itself;
+/// the second, the branch point moved by settings.switch_step along `direction` and corrected on
+/// the hyperplane orthogonal to it; from there the branch is continued like a family, with its
+/// events and det [F_u F_p; tᵀ] as a branch-point test, until it reaches p_min or p_max (the last
+/// point exactly there, `range`) or meets another family (`branch_point`: the located branch point
+/// is its last event). InputError for a bad input or when the first corrector fails.
+Family continue_branch(const ContinuationProblem& problem, const Eigen::VectorXd& u_star,
+                       double p_star, const Eigen::VectorXd& direction, double p_min, double p_max,
+                       const ContinuationSettings& settings = {});
 
 }  // namespace newtop

@@ -57,6 +57,19 @@ Family resonance_boundary(const PitchPlanePath& path, const BifurcationEvent& ev
                           double q1, const SpinOrbitResonance& r, double line,
                           const ContinuationSettings& settings = kBoundarySettings);
 
+/// Branch switching at a flip or a branch point of the resonance family (docs/continuation.md
+/// §2): the new family by 2-D shooting, unknowns (θ(0), θ′(0)), residual x(2πN′) − x(0) −
+/// (M′π, 0) with the Jacobian [Φ(2πN′, 0) − I, F_p] (F_p by a central difference). At a flip the
+/// period-doubled family: N′ = 2N, M′ = 2M (the parent solves it too and crosses it at the flip);
+/// at a branch point the asymmetric pair: N′ = N, M′ = M. It leaves the event along (v, 0), v the
+/// eigenvector of the parent's monodromy for −1 (flip) or +1 (branch point), and is continued by
+/// continue_branch within [p_min, p_max] (which must contain the event). FamilyPoint: values
+/// (θ(0), θ′(0)), period 2πN′, the two multipliers of Φ(2πN′, 0), stability, tests (T + 2, the
+/// branch-point determinant). InputError for a fold or a Krein event.
+Family resonance_branch(const PitchPath& path, const BifurcationEvent& event, double p_min,
+                        double p_max, const SpinOrbitResonance& r, double line,
+                        const ContinuationSettings& settings = {});
+
 /// The relative equilibrium at rest in the orbital frame (circular orbit, rate 1) with the radius
 /// along body axis `radial` and the orbit normal along body axis `normal` (principal axes), as the
 /// principal moment `index` of `inertia` moves from p0 to p1 (docs/continuation.md §4); the
