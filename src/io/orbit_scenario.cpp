@@ -319,40 +319,6 @@ OrbitScenario parse_orbit_scenario(const std::string& text, const std::string& s
   return s;
 }
 
-MethodSettings resolve_orbit_method(const io::OrbitScenario& sc, const io::IntegrateOverrides& o) {
-  const auto& f = sc.integrate;
-  const std::optional<double> step = o.step ? o.step : (o.tol ? std::nullopt : f.step);
-  const std::optional<double> tol = o.tol ? o.tol : (o.step ? std::nullopt : f.tol);
-  MethodSettings m;
-  m.name = o.method            ? *o.method
-           : (o.step || o.tol) ? std::string(o.step ? kDefaultFixedMethod : kOrbitAdaptiveMethod)
-           : f.method          ? *f.method
-           : step              ? std::string(kDefaultFixedMethod)
-                               : std::string(kOrbitAdaptiveMethod);
-  MethodSettings probe = m;  // the name first: a method that does not run on an orbit
-  probe.step = 1.0;
-  validate_orbit_method(probe);
-  if (is_orbit_adaptive_method(m.name)) {
-    if (!tol) throw InputError("[integrate] tol: method " + m.name + " needs a tolerance");
-    m.abs_tol = m.rel_tol = *tol;
-  } else {
-    if (!step) throw InputError("[integrate] step: method " + m.name + " needs a step");
-    m.step = *step;
-  }
-  validate_orbit_method(m);
-  return m;
-}
-
-double resolve_orbit_t_end(const io::OrbitScenario& sc, const io::IntegrateOverrides& o) {
-  const std::optional<double> t_end = o.t_end ? o.t_end : sc.integrate.t_end;
-  if (!t_end) throw InputError("[integrate] t_end: missing in the sweep file and the scenario");
-  if (!std::isfinite(*t_end) || !(*t_end > sc.integrate.t0)) {
-    throw InputError("[integrate] t_end: expected a finite time > t0 = " +
-                     format_number(sc.integrate.t0) + ", found " + format_number(*t_end));
-  }
-  return *t_end;
-}
-
 OrbitScenario load_orbit_scenario(const std::string& path) {
   return parse_orbit_scenario(read_regular_file(path, kMaxTomlBytes, "scenario file"), path);
 }

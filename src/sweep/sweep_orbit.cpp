@@ -6,9 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <variant>
 
 #include "newtop/io/orbit_scenario.hpp"
+#include "newtop/io/orbit_settings.hpp"
 #include "newtop/orbit/debra_delp.hpp"
+#include "newtop/orbit/orbit_chaos.hpp"
 #include "newtop/orbit/orbit_integrate.hpp"
 #include "newtop/orbit/spin_orbit.hpp"
 #include "sweep_points.hpp"
@@ -27,8 +31,8 @@ struct OrbitRun {
 };
 
 OrbitRun run_orbit(const SweepFile& s, const io::OrbitScenario& sc) {
-  const MethodSettings method = io::resolve_orbit_method(sc, s.integrate);
-  const double t0 = sc.integrate.t0, t1 = io::resolve_orbit_t_end(sc, s.integrate);
+  const MethodSettings method = io::resolve_method(sc, s.integrate);
+  const double t0 = sc.integrate.t0, t1 = io::resolve_t_end(sc, s.integrate);
   const std::int64_t max_steps = sc.integrate.max_steps.value_or(100'000'000);
   OrbitRun r;
   const OrbitCasimirs c0 = casimirs(sc.initial);
@@ -137,6 +141,8 @@ std::vector<std::string> orbit_quantity_columns(const SweepFile& s) {
     if (q == "synchronous_odd") {
       c.insert(c.end(), {"k", "odd_found", "odd_dtheta0", "odd_trace", "odd_stable"});
     }
+    if (q == "megno") c.push_back("megno");
+    if (q == "lyapunov_max") c.push_back("lyapunov_max");
   }
   return c;
 }
@@ -148,8 +154,6 @@ void check_model(const SweepFile& s) {
     if (orbit && (q == "stability" || q == "equilibria")) {
       why = q == "stability" ? "use debra_delp, or newtop stability --equilibrium K"
                              : "use newtop equilibria on the scenario";
-    } else if (orbit && (q == "megno" || q == "lyapunov_max")) {
-      why = "the sweep's tangent runs are those of the fixed point; use newtop chaos";
     } else if (!orbit && (q == "debra_delp" || q == "synchronous_odd")) {
       why = "it needs an orbit scenario ([orbit])";
     } else if (q == "debra_delp" && s.model != BaseModel::circular_orbit) {
@@ -178,14 +182,17 @@ void check_model(const SweepFile& s) {
 
 void check_orbit_point(const SweepFile& s, const io::OrbitScenario& sc) {
   if (wants(s, "drift") || wants(s, "final_state")) {
-    io::resolve_orbit_method(sc, s.integrate);
-    io::resolve_orbit_t_end(sc, s.integrate);
+    io::resolve_method(sc, s.integrate);
+    io::resolve_t_end(sc, s.integrate);
   }
   if (wants(s, "debra_delp")) {
     const auto [k_R, k_Y] = debra_delp_ratios(sc.body);
     inertia_from_ratios(k_R, k_Y);  // a body on the edge of the triangle inequality: |k| = 1
   }
   if (wants(s, "synchronous_odd")) point_pitch_problem(sc);
+  if (wants(s, "megno") || wants(s, "lyapunov_max")) {
+    check_orbit_chaos_settings(orbit_chaos_settings(s, sc));
+  }
 }
 
 PointResult evaluate_orbit_point(const SweepFile& s, std::size_t index) {
@@ -197,9 +204,20 @@ PointResult evaluate_orbit_point(const SweepFile& s, std::size_t index) {
       return {std::string(to_string(run->outcome.status)), {}};
     }
   }
+  std::optional<OrbitChaosResult> chaos;
+  if (wants(s, "megno") || wants(s, "lyapunov_max")) {  // one tangent run for both
+    chaos = run_orbit_chaos(s, sc);
+    if (chaos->outcome.status != Status::finished) {
+      return {std::string(to_string(chaos->outcome.status)), {}};
+    }
+  }
   PointResult r{"ok", {}};
   for (const std::string& q : s.quantities) {
-    if (q == "drift") {
+    if (q == "megno") {
+      r.values.push_back(chaos->indicators.megno);
+    } else if (q == "lyapunov_max") {
+      r.values.push_back(chaos->indicators.lyapunov_max);
+    } else if (q == "drift") {
       if (s.model == BaseModel::circular_orbit) r.values.push_back(run->jacobi);
       r.values.insert(r.values.end(), {run->gamma_gamma, run->normal_normal, run->gamma_normal});
     } else if (q == "final_state") {

@@ -208,6 +208,7 @@ const char* const kSweepQuantities[] = {"stability",   "drift",          "equili
 
 bool sweep_must_work(const std::string& model, const std::string& q) {
   if (q == "drift" || q == "final_state") return true;
+  if (model != "fixed point" && (q == "megno" || q == "lyapunov_max")) return true;  // rkf78
   if (model == "circular orbit") return q == "debra_delp";
   if (model == "elliptic orbit") return q == "synchronous_odd";
   return q != "debra_delp" && q != "synchronous_odd" && q != "stability";
@@ -216,7 +217,12 @@ bool sweep_must_work(const std::string& model, const std::string& q) {
 std::string sweep_file(const Model& m, const std::string& quantity, int n) {
   const std::string text = "scenario = \"" + newtop::test::example_path(m.example) +
                            "\"\nquantities = [\"" + quantity +
-                           "\"]\n[integrate]\nt_end = " + m.t_end + "\n";
+                           "\"]\n[integrate]\nt_end = " + m.t_end + "\n" +
+                           // The chaos indicators of an orbit need an embedded pair (orbit.md §13).
+                           (std::string(m.name) != "fixed point" &&
+                                    (quantity == "megno" || quantity == "lyapunov_max")
+                                ? "method = \"rkf78\"\ntol = 1e-9\n"
+                                : "");
   return newtop::test::write_text(
              newtop::test::scratch_path("newtop_options", "sweep" + std::to_string(n) + ".toml"),
              text)

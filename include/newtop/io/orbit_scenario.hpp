@@ -42,15 +42,6 @@ bool is_orbit_scenario(const std::string& path);
 /// `FILE:LINE:COL: [section] key: expected …, found …`.
 OrbitScenario load_orbit_scenario(const std::string& path);
 
-/// The method of a run of the scenario, overrides (a sweep's [integrate]) before the file's
-/// [integrate], as io::resolve_method for the fixed point: a splitting composition with a step
-/// (splitting6 by default), or rkf78/dopri5 with a tolerance (rkf78 by default). Throws
-/// InputError naming `method`, `step` or `tol` for a method that does not run on an orbit or
-/// lacks its step or tolerance.
-MethodSettings resolve_orbit_method(const OrbitScenario& s, const IntegrateOverrides& o);
-
-/// t_end from the overrides or the file: finite and > t0, else InputError naming t_end.
-double resolve_orbit_t_end(const OrbitScenario& s, const IntegrateOverrides& o);
 OrbitScenario parse_orbit_scenario(const std::string& text, const std::string& source);
 
 }  // namespace newtop::io
