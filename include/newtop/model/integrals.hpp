@@ -75,4 +75,22 @@ IntegralValues integrals(const Model& model, const State& s);
 /// The names of the integrals conserved in the model's own field (as integrals(Model, s) fills).
 std::vector<std::string> conserved_integrals(const Model& model);
 
+/// The drift of the integrals over a run (docs/model.md §5): the largest |I(x) − I(x0)| of each
+/// integral that holds, x0 being the first state observed, and the largest |m| seen (the scale of
+/// the area integral's drift). The one observer of the integrals' drift of every run: simulate,
+/// section, sweep points and ensembles feed it the integrals at each accepted step.
+struct IntegralsDrift {
+  IntegralValues initial;    ///< the integrals at the first state observed
+  IntegralValues max_drift;  ///< max |I − I(x0)|, with brun/lagrange where `initial` has them
+  double max_m = 0.0;        ///< max |m| over the states given to observe(model, s)
+  bool started = false;
+
+  /// The integrals at the next state; the first one is the start.
+  void observe(const IntegralValues& v);
+  /// The integrals of the model's own field at s, and |m|.
+  void observe(const Model& model, const State& s);
+  /// Takes the larger drift of each integral from another run (each against its own start).
+  void merge(const IntegralsDrift& other);
+};
+
 }  // namespace newtop
