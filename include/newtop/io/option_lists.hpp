@@ -46,6 +46,11 @@ struct Range {
   double lo, hi;
   int n;
   double at(int k) const { return n == 1 ? lo : lo + (hi - lo) * k / (n - 1); }
+  std::vector<double> values() const {
+    std::vector<double> v;
+    for (int k = 0; k < n; ++k) v.push_back(at(k));
+    return v;
+  }
 };
 
 /// "LO:HI:N" (or "NAME=LO:HI:N" when `named`, NAME in omega, lambda, A, B, C), N from 1 to
