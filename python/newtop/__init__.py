@@ -22,9 +22,11 @@ try:  # the compiled extension, when the build made one (PYTHONPATH=build/python
     from ._newtop import integrals as integrals_at  # noqa: F401  (the library's, at a state)
     from ._newtop import (AnalyticResult, ChaosResult, Equilibria, Section,  # noqa: F401
                           StabilityReport)
-    from .commands import (field, find_integrals, integrals, libration, rotations,  # noqa: F401
+    from ._newtop import RotationFamilies  # noqa: F401
+    from .commands import (find_integrals, integrals, libration,  # noqa: F401
                            simulate, sweep, view)
-    from .analyses import analytic, chaos, equilibria, section, stability  # noqa: F401
+    from .analyses import (analytic, chaos, equilibria, field, rotations, section,  # noqa: F401
+                           stability)
 
     HAVE_EXTENSION = True
 except ModuleNotFoundError as e:  # absent is fine; present but broken is an error
@@ -34,7 +36,8 @@ except ModuleNotFoundError as e:  # absent is fine; present but broken is an err
 
 __all__ = ["HAVE_EXTENSION", "__version__"]
 if HAVE_EXTENSION:
-    __all__ += ["AnalyticResult", "ChaosResult", "Equilibria", "Section", "StabilityReport",
+    __all__ += ["AnalyticResult", "ChaosResult", "Equilibria", "RotationFamilies", "Section",
+                "StabilityReport",
                 "Body", "InputError", "MassModel", "Model", "QuadraticField", "Scenario", "State",
                 "analytic", "chaos", "conserved_integrals", "equilibria", "field", "find_integrals",
                 "integrals", "integrals_at", "integrate", "is_orbit_scenario", "libration",

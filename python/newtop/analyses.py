@@ -132,4 +132,37 @@ def analytic(model, state=None, times=None, *, max_steps=None, **options):
                              max_steps=max_steps)
 
 
-__all__ = ["analytic", "chaos", "equilibria", "section", "stability"]
+def rotations(model, *, samples=180, **options):
+    """The families of permanent rotations (docs/model.md §8): ``RotationFamilies`` with
+    ``principal_axes`` (K, 3), ``any_axis_omega``, ``cone_is_whole_sphere``, ``cone_gamma``
+    (N, 3), ``cone_omega_squared`` (N), ``cone_admissible`` (N, bool).
+    Given a path: ``newtop rotations PATH --json [options]`` as a dict."""
+    if not _is_native(model):
+        return commands.rotations(model, samples=samples if samples != 180 else None, **options)
+    if options:
+        raise TypeError("rotations(model): unexpected options %s" % sorted(options))
+    m, _ = _model_state(model, None)
+    return _newtop._rotations(m, samples=samples)
+
+
+def field(model, gamma=None, *, R=None, scan_R=None, **options):
+    """The exact field of the model's mass model against its quadratic model at ``gamma`` (the
+    mass model's frame, normalised): a dict with ``mu``, ``R``, ``gamma`` (principal axes),
+    ``exact``, ``approx``, ``difference`` (each ``potential``, ``grad_gamma``, ``dV_dR``,
+    ``moment``, ``force``, ``hessian_gamma``), ``approx_truncation_error``, ``input_frame``, and
+    with ``scan_R=(R1, R2, N)`` the ``scan`` of the quadratic model's error over R (arrays).
+    Given a path: ``newtop field PATH --gamma ... --json [options]`` as a dict."""
+    if not _is_native(model):
+        scan = None if scan_R is None else "%r:%r:%d" % (float(scan_R[0]), float(scan_R[1]),
+                                                         int(scan_R[2]))
+        return commands.field(model, gamma=gamma, R=R, scan_R=scan, **options)
+    if options:
+        raise TypeError("field(model): unexpected options %s" % sorted(options))
+    if gamma is None:
+        raise ValueError("gamma: missing: give the direction of the centre")
+    m, _ = _model_state(model, None)
+    scan = None if scan_R is None else (float(scan_R[0]), float(scan_R[1]), int(scan_R[2]))
+    return _newtop._field(m, np.asarray(gamma, dtype=float), R=R, scan_R=scan)
+
+
+__all__ = ["analytic", "chaos", "equilibria", "field", "rotations", "section", "stability"]

@@ -192,3 +192,46 @@ def test_brun_state_at_agrees_with_integration():
         assert np.abs(np.asarray(x.m) - r["m"][-1]).max() < BRUN_AGREEMENT
     with pytest.raises(newtop.InputError):
         newtop.brun_state_at(sc.model, newtop.State([0.5, 1.2, 0.75], [0.0, 0.0, 2.0]), 1.0)
+
+
+EXAMPLES = os.path.join(os.path.dirname(__file__), "..", "..", "examples")
+
+
+def test_rotations_equal_the_program(tmp_path):
+    model, _ = body_field_state()
+    r = newtop.rotations(model, samples=90)
+    out = tmp_path / "cone.csv"
+    j = program_json("rotations", scenario_file(tmp_path), "--samples", "90", "--out", str(out))
+    assert isinstance(r, newtop.RotationFamilies)
+    assert np.array_equal(r.principal_axes.reshape(-1, 3),
+                          np.reshape(j["principal_axes_any_omega"], (-1, 3)))
+    assert r.any_axis_omega == j["any_axis_omega"]
+    assert r.cone_is_whole_sphere == j["cone_is_whole_sphere"]
+    assert len(r.cone_omega_squared) == j["cone_samples"] > 0
+    assert int(r.cone_admissible.sum()) == j["cone_admissible_samples"]
+    rows = np.loadtxt(out, delimiter=",", skiprows=1, ndmin=2)
+    assert np.array_equal(rows[:, 0:3], r.cone_gamma)
+    assert np.array_equal(rows[:, 3], r.cone_omega_squared)
+    assert np.array_equal(rows[:, 4] == 1, r.cone_admissible)
+
+
+def test_field_and_its_R_scan_equal_the_program():
+    path = os.path.join(EXAMPLES, "exact_box_multipole.toml")
+    model = newtop.load_scenario(path).model
+    f = newtop.field(model, [0.3, 0.4, 1.0], scan_R=(10.0, 40.0, 6))
+    j = program_json("field", path, "--gamma", "0.3,0.4,1", "--scan-R", "10:40:6")
+    assert f["mu"] == j["mu"] and f["R"] == j["R"]
+    assert np.array_equal(f["gamma"], j["gamma"])
+    for part in ("exact", "approx", "difference"):
+        for key in ("potential", "dV_dR"):
+            assert f[part][key] == j[part][key], (part, key)
+        for key in ("grad_gamma", "moment", "force", "hessian_gamma"):
+            assert np.array_equal(f[part][key], j[part][key]), (part, key)
+        assert np.array_equal(f["input_frame"][part]["moment"], j["input_frame"][part]["moment"])
+    assert np.array_equal(f["input_frame"]["gamma"], j["input_frame"]["gamma"])
+    assert f["approx_truncation_error"] == j["approx_truncation_error"]
+    for key in ("R", "potential_error", "moment_error", "moment_relative_error"):
+        assert np.array_equal(f["scan"][key], j["scan"][key]), key
+    assert f["scan"]["slope_moment"] == j["scan"]["slope_moment"]
+    with pytest.raises(newtop.InputError, match="mass model"):
+        newtop.field(body_field_state()[0], [0, 0, 1], R=5.0)
