@@ -22,11 +22,10 @@ try:  # the compiled extension, when the build made one (PYTHONPATH=build/python
     from ._newtop import integrals as integrals_at  # noqa: F401  (the library's, at a state)
     from ._newtop import (AnalyticResult, ChaosResult, Equilibria, Section,  # noqa: F401
                           StabilityReport)
-    from ._newtop import RotationFamilies  # noqa: F401
-    from .commands import (find_integrals, integrals, libration,  # noqa: F401
-                           simulate, sweep, view)
-    from .analyses import (analytic, chaos, equilibria, field, rotations, section,  # noqa: F401
-                           stability)
+    from ._newtop import IntegralSearch, RotationFamilies  # noqa: F401
+    from .commands import integrals, libration, simulate, sweep, view  # noqa: F401
+    from .analyses import (analytic, chaos, equilibria, field, find_integrals,  # noqa: F401
+                           rotations, section, stability)
 
     HAVE_EXTENSION = True
 except ModuleNotFoundError as e:  # absent is fine; present but broken is an error
@@ -36,7 +35,7 @@ except ModuleNotFoundError as e:  # absent is fine; present but broken is an err
 
 __all__ = ["HAVE_EXTENSION", "__version__"]
 if HAVE_EXTENSION:
-    __all__ += ["AnalyticResult", "ChaosResult", "Equilibria", "RotationFamilies", "Section",
+    __all__ += ["AnalyticResult", "ChaosResult", "Equilibria", "IntegralSearch", "RotationFamilies", "Section",
                 "StabilityReport",
                 "Body", "InputError", "MassModel", "Model", "QuadraticField", "Scenario", "State",
                 "analytic", "chaos", "conserved_integrals", "equilibria", "field", "find_integrals",

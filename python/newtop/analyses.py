@@ -145,6 +145,18 @@ def rotations(model, *, samples=180, **options):
     return _newtop._rotations(m, samples=samples)
 
 
+def find_integrals(model, *, degree=2, points=0, **options):
+    """Numerical search for first integrals polynomial in (omega, gamma) up to ``degree``:
+    ``IntegralSearch`` with ``monomials``, ``coefficients`` (K, monomials), ``names``, ``rank``,
+    ``gap``, ``singular_values``. Given a path: ``newtop find-integrals PATH --json`` as a dict."""
+    if not _is_native(model):
+        return commands.find_integrals(model, degree=degree, points=points or None, **options)
+    if options:
+        raise TypeError("find_integrals(model): unexpected options %s" % sorted(options))
+    m, _ = _model_state(model, None)
+    return _newtop._find_integrals(m, degree=degree, points=points)
+
+
 def field(model, gamma=None, *, R=None, scan_R=None, **options):
     """The exact field of the model's mass model against its quadratic model at ``gamma`` (the
     mass model's frame, normalised): a dict with ``mu``, ``R``, ``gamma`` (principal axes),
@@ -165,4 +177,5 @@ def field(model, gamma=None, *, R=None, scan_R=None, **options):
     return _newtop._field(m, np.asarray(gamma, dtype=float), R=R, scan_R=scan)
 
 
-__all__ = ["analytic", "chaos", "equilibria", "field", "rotations", "section", "stability"]
+__all__ = ["analytic", "chaos", "equilibria", "field", "find_integrals", "rotations", "section",
+           "stability"]

@@ -11,6 +11,7 @@
 
 #include "bindings.hpp"
 #include "newtop/analysis/field_scan.hpp"
+#include "newtop/analysis/find_integrals.hpp"
 #include "newtop/analysis/rotations.hpp"
 
 namespace py = pybind11;
@@ -124,10 +125,62 @@ py::dict field(const Model& model, const Vec3& gamma, std::optional<double> R,
   return d;
 }
 
+void bind_find_integrals(py::module_& m) {
+  py::class_<IntegralSearch>(m, "IntegralSearch",
+                             "The numerical search for polynomial first integrals (docs/model.md "
+                             "§5): the result of newtop.find_integrals(model), as `newtop "
+                             "find-integrals --json`.")
+      .def_readonly("degree", &IntegralSearch::degree)
+      .def_property_readonly(
+          "monomials",
+          [](const IntegralSearch& s) {
+            std::vector<std::string> n;
+            for (const auto& x : s.monomials) n.push_back(to_string(x));
+            return n;
+          },
+          "names of the monomials in (omega, gamma), the coefficients' order")
+      .def_property_readonly(
+          "singular_values", [](const IntegralSearch& s) { return array(s.singular_values); },
+          "descending, relative to the largest")
+      .def_readonly("rank", &IntegralSearch::rank)
+      .def_readonly("gap", &IntegralSearch::gap)
+      .def_property_readonly(
+          "names",
+          [](const IntegralSearch& s) {
+            std::vector<std::optional<std::string>> n;
+            for (const auto& i : s.integrals) n.push_back(i.name);
+            return n;
+          },
+          "each integral's name where recognised (energy, area*geometric, ...), else None")
+      .def_property_readonly(
+          "coefficients",
+          [](const IntegralSearch& s) {
+            py::array_t<double> a({static_cast<py::ssize_t>(s.integrals.size()),
+                                   static_cast<py::ssize_t>(s.monomials.size())});
+            double* p = a.mutable_data();
+            for (const auto& i : s.integrals) {
+              for (const double c : i.coefficients) *p++ = c;
+            }
+            return a;
+          },
+          "(K, monomials): a basis of the null space, one integral a row");
+  m.def(
+      "_find_integrals",
+      [](const Model& model, int degree, int points) {
+        if (model.kind() != FieldKind::quadratic) {
+          throw InputError("find_integrals: expected a model of the quadratic field, found " +
+                           std::string(to_string(model.kind())));
+        }
+        return find_integrals(model.quadratic(), SearchOptions{.degree = degree, .points = points});
+      },
+      py::arg("model"), py::arg("degree") = 2, py::arg("points") = 0);
+}
+
 }  // namespace
 
 void bind_fields(py::module_& m) {
   bind_rotations(m);
+  bind_find_integrals(m);
   m.def("_field", &field, py::arg("model"), py::arg("gamma"), py::arg("R") = std::nullopt,
         py::arg("scan_R") = std::nullopt,
         "The exact field of the model's mass model against its quadratic model at gamma (the "

@@ -235,3 +235,19 @@ def test_field_and_its_R_scan_equal_the_program():
     assert f["scan"]["slope_moment"] == j["scan"]["slope_moment"]
     with pytest.raises(newtop.InputError, match="mass model"):
         newtop.field(body_field_state()[0], [0, 0, 1], R=5.0)
+
+
+def test_find_integrals_equal_the_program(tmp_path):
+    model, _ = body_field_state()
+    s = newtop.find_integrals(model, degree=2)
+    j = program_json("find-integrals", scenario_file(tmp_path), "--degree", "2")
+    assert isinstance(s, newtop.IntegralSearch)
+    assert s.degree == j["degree"] and len(s.monomials) == j["monomials"]
+    assert s.rank == j["rank"]
+    assert (s.gap if np.isfinite(s.gap) else None) == j["gap"]  # no gap: inf here, null in JSON
+    assert np.array_equal(s.singular_values, j["singular_values"])
+    assert len(s.names) == j["independent_integrals"] > 0
+    for name, row, found in zip(s.names, s.coefficients, j["integrals"]):
+        assert name == found["name"]
+        nonzero = {m: c for m, c in zip(s.monomials, row) if c != 0.0}
+        assert nonzero == found["coefficients"]
