@@ -23,9 +23,9 @@ try:  # the compiled extension, when the build made one (PYTHONPATH=build/python
     from ._newtop import (AnalyticResult, ChaosResult, Equilibria, Section,  # noqa: F401
                           StabilityReport)
     from ._newtop import IntegralSearch, RotationFamilies  # noqa: F401
-    from .commands import integrals, libration, simulate, sweep, view  # noqa: F401
+    from .commands import integrals, libration, simulate, view  # noqa: F401
     from .analyses import (analytic, chaos, equilibria, field, find_integrals,  # noqa: F401
-                           rotations, section, stability)
+                           rotations, section, stability, sweep)
 
     HAVE_EXTENSION = True
 except ModuleNotFoundError as e:  # absent is fine; present but broken is an error
