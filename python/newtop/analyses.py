@@ -167,8 +167,8 @@ def field(model, gamma=None, *, R=None, scan_R=None, **options):
     with ``scan_R=(R1, R2, N)`` the ``scan`` of the quadratic model's error over R (arrays).
     Given a path: ``newtop field PATH --gamma ... --json [options]`` as a dict."""
     if not _is_native(model):
-        scan = None if scan_R is None else "%r:%r:%d" % (float(scan_R[0]), float(scan_R[1]),
-                                                         int(scan_R[2]))
+        scan = scan_R if scan_R is None or isinstance(scan_R, str) else "%r:%r:%d" % (
+            float(scan_R[0]), float(scan_R[1]), int(scan_R[2]))
         return commands.field(model, gamma=gamma, R=R, scan_R=scan, **options)
     if options:
         raise TypeError("field(model): unexpected options %s" % sorted(options))
