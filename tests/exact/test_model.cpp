@@ -24,7 +24,8 @@ const Vec3 kGamma = Vec3(0.3, -0.5, 0.8).normalized();
 constexpr double kValueTol = 1e-12;
 
 TEST(Model, ExactFieldAccessorGivesTheFieldOfItsKindOnly) {
-  const test::Case& c = test::cases().front();
+  const std::vector<test::Case> all = test::cases();
+  const test::Case& c = all.front();
   const double R = 4.0 * max_radius(*c.model);
   const Model exact = Model::exact(c.model, 2.5, R);
   const Model multipole = Model::multipole(c.model, 3, 2.5, R);
