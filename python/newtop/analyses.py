@@ -209,13 +209,13 @@ def scenario_text(model, state=None, *, t0=0.0, t_end=None, method=None, step=No
         t_end = sc.t_end if t_end is None else t_end
         if method is None and step is None and tol is None:
             method, step, tol = sc.method, sc.step, sc.tol
+    if model.kind != "quadratic":
+        raise ValueError("base: expected a model of the quadratic field built in code, found "
+                         "the %s field (give its scenario file)" % model.kind)
     body = model.body
     if not np.array_equal(np.asarray(body.principal_axes), np.eye(3)):
         raise ValueError("base: expected a body given by its principal moments (principal axes "
                          "the identity), found other principal axes")
-    if model.kind != "quadratic":
-        raise ValueError("base: expected a model of the quadratic field built in code, found "
-                         "the %s field (give its scenario file)" % model.kind)
     if state is None:
         raise ValueError("base: a Model needs state= (the initial state of every point)")
     state = _state(state)

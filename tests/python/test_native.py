@@ -251,6 +251,8 @@ def test_find_integrals_equal_the_program(tmp_path):
         assert name == found["name"]
         nonzero = {m: c for m, c in zip(s.monomials, row) if c != 0.0}
         assert nonzero == found["coefficients"]
+    with pytest.raises(newtop.InputError, match="points: expected 0"):
+        newtop.find_integrals(model, points=-1)  # refused, never taken for the default
 
 
 def test_sweep_of_a_model_built_in_code_equals_the_program(tmp_path):
