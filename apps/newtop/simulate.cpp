@@ -112,16 +112,6 @@ Outcome run_plan(const RunPlan& p, const Model& model, const X& x0, IntegralsDri
   return out;
 }
 
-/// The Casimirs γ·γ and m·γ are constants of every field's motion; their drift, relative to
-/// γ·γ(0) and to max |m|, is a lower bound of the state's relative error (δ(γ·γ) = 2γ·δγ + |δγ|²).
-CasimirCheck casimir_check(const IntegralValues& initial, const IntegralValues& drift,
-                           double max_m) {
-  CasimirCheck c;
-  c.geometric = drift.geometric / initial.geometric;
-  c.area = max_m > 0 ? drift.area / max_m : 0.0;
-  return c;
-}
-
 /// The summary or the JSON; with an exact or multipole field, the quadratic model's run `q` beside.
 void print_report(const SimulateArgs& a, const io::Scenario& sc, SimulationReport& rep,
                   const std::optional<Outcome>& q) {
@@ -188,8 +178,8 @@ int run_in(const SimulateArgs& a, const io::Scenario& sc) {
   SimulationReport rep{
       sc,           plan.method, out, drift.initial, integrals(model, out.state), drift.max_drift,
       plan.out_path};
-  rep.casimir = casimir_check(drift.initial, drift.max_drift, drift.max_m);
-  if (rep.casimir.exceeded()) warn(rep.casimir.warning());
+  rep.casimir = casimir_drift(drift);
+  if (rep.casimir.exceeded()) warn(casimir_warning(rep.casimir));
   print_report(a, sc, rep, q);
   return out.status == Status::finished ? kExitOk : kExitIncomplete;
 }

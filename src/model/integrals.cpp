@@ -110,4 +110,11 @@ void IntegralsDrift::merge(const IntegralsDrift& other) {
   }
 }
 
+CasimirDrift casimir_drift(const IntegralsDrift& drift) {
+  CasimirDrift c;
+  c.geometric = drift.max_drift.geometric / drift.initial.geometric;
+  c.area = drift.max_m > 0 ? drift.max_drift.area / drift.max_m : 0.0;
+  return c;
+}
+
 }  // namespace newtop

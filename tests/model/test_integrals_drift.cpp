@@ -58,6 +58,22 @@ TEST(IntegralsDrift, MergeTakesTheLargerDriftOfEachRunAgainstItsOwnStart) {
   EXPECT_NEAR(none.max_drift.area, 0.5, kExact);
 }
 
+TEST(IntegralsDrift, CasimirDriftIsRelativeToGammaGammaAndToTheLargestM) {
+  const Model model(free_body());
+  IntegralsDrift d;
+  d.observe(model, along_e1(1.0));
+  d.observe(model, along_e1(2.0));  // area drift 1 against max |m| = 2
+  State off = along_e1(2.0);
+  off.gamma = Vec3(1.0, 0.5, 0.0);  // γ·γ = 5/4: geometric drift 1/4 of γ0·γ0 = 1
+  d.observe(IntegralValues{0.0, area(off), geometric(off), std::nullopt, std::nullopt});
+  const CasimirDrift c = casimir_drift(d);
+  EXPECT_NEAR(c.geometric, 0.25, kExact);
+  EXPECT_NEAR(c.area, 0.5, kExact);
+  EXPECT_TRUE(c.exceeded());
+  EXPECT_FALSE((CasimirDrift{1e-9, 1e-9}.exceeded()));
+  EXPECT_TRUE((CasimirDrift{std::nan(""), 0.0}.exceeded()));  // a NaN drift is never a pass
+}
+
 TEST(IntegralsDrift, SplittingRunKeepsTheCasimirsToRoundOff) {
   const QuadraticModel q = test::generic_model();
   const Model model(q);
