@@ -16,6 +16,7 @@
 #include "command.hpp"
 #include "newtop/analysis/rotation_family.hpp"
 #include "newtop/io/json.hpp"
+#include "newtop/io/option_lists.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
@@ -28,27 +29,19 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 std::pair<double, double> parse_range(const std::string& text) {
-  std::istringstream is(text);
-  double a = 0, b = 0;
-  char colon = 0;
-  std::string rest;
-  if (!(is >> a >> colon >> b) || colon != ':' || (is >> rest) || !std::isfinite(a) ||
-      !std::isfinite(b) || a == b) {
+  const auto ab = io::read_colon_values<double, double>(text);
+  if (!ab || !std::isfinite(std::get<0>(*ab)) || !std::isfinite(std::get<1>(*ab)) ||
+      std::get<0>(*ab) == std::get<1>(*ab)) {
     throw InputError("--range: expected A:B, two different finite numbers, found '" + text + "'");
   }
-  return {a, b};
+  return {std::get<0>(*ab), std::get<1>(*ab)};
 }
 
 SpinOrbitResonance parse_resonance(const std::string& text) {
-  std::istringstream is(text);
-  int p = 0, q = 0;
-  char colon = 0;
-  std::string rest;
-  if (!(is >> p >> colon >> q) || colon != ':' || (is >> rest)) {
-    throw InputError("--resonance: expected P:Q (integers), found '" + text + "'");
-  }
+  const auto pq = io::read_colon_values<int, int>(text);
+  if (!pq) throw InputError("--resonance: expected P:Q (integers), found '" + text + "'");
   try {
-    return resonance(p, q);
+    return resonance(std::get<0>(*pq), std::get<1>(*pq));
   } catch (const InputError& e) {
     throw InputError(std::string("--resonance: ") + e.what());
   }

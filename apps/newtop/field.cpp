@@ -87,23 +87,23 @@ int run(const FieldArgs& a) {
   const std::shared_ptr<const MassModel>& mass_model = sc.model.mass_model();
   if (!mass_model)
     throw InputError(sc.source + ": [mass_model]: missing: newtop field needs a mass model");
-  const FieldKind kind = sc.model.kind();
-  const CentreParameters centre = centre_parameters(sc.model);
-  if (kind == FieldKind::quadratic && !a.R) {
+  if (sc.model.kind() == FieldKind::quadratic && !a.R) {
     throw InputError(sc.source +
                      ": [field] kind: expected \"exact\" or \"multipole\" with mu and R, "
                      "or give --R");
   }
-  // Without an exact [field] (only --R) the centre has unit mu.
-  const double mu = kind == FieldKind::quadratic ? 1.0 : centre.mu;
-  const double R = a.R.value_or(centre.R);
-  const Body& body = sc.model.body();
-  const Mat3& P = body.principal_axes();
   const Vec3 given = io::parse_gamma(a.gamma);
-  const Vec3 gamma = P.transpose() * given;  // user frame → principal axes
-  const FieldComparison principal = compare_field(mass_model, body, mu, R, gamma);
-  FieldComparison input = in_input_frame(principal, P);
-  input.gamma = given;  // as given (normalised), not rotated there and back
+  std::optional<RadiusRange> range;
+  if (a.scan) {
+    const io::RadiusScan s = io::parse_radius_scan(*a.scan);
+    range = RadiusRange{s.R1, s.R2, s.n};
+  }
+  const FieldReport r = field_report(sc.model, given, a.R, range);
+  const Body& body = sc.model.body();
+  const FieldComparison& principal = r.principal;
+  const FieldComparison& input = r.input;
+  const double mu = r.mu, R = r.R;
+  const Vec3& gamma = r.gamma;
   io::Json j;
   j["scenario"] = sc.source;
   j["gamma"] = io::to_json(gamma);
@@ -115,12 +115,11 @@ int run(const FieldArgs& a) {
   j["exact"] = values_json(principal.exact);
   j["approx"] = values_json(principal.approx);
   j["difference"] = values_json(principal.difference);
-  const TruncationError t = truncation_error(MultipoleField::make(*mass_model, 3, mu, R, P), gamma);
-  j["approx_truncation_error"] = {{"next_term", t.next_term}, {"bound", t.bound}};
+  j["approx_truncation_error"] = {{"next_term", r.truncation.next_term},
+                                  {"bound", r.truncation.bound}};
   j["input_frame"] = frame_json("input", input);
-  if (a.scan) {
-    const io::RadiusScan s = io::parse_radius_scan(*a.scan);
-    const FieldScan f = scan_field_R(mass_model, body, mu, s.R1, s.R2, s.n, gamma);
+  if (r.scan) {
+    const FieldScan& f = *r.scan;
     j["scan"] = {{"R", f.R},
                  {"potential_error", f.potential_error},
                  {"moment_error", f.moment_error},

@@ -2,6 +2,7 @@
 // a circular orbit and in the true anomaly on an elliptic one; the Jacobi integral and the
 // Casimirs reported with their drift.
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -12,26 +13,13 @@
 #include "newtop/io/orbit_settings.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/orbit/orbit_integrate.hpp"
+#include "newtop/orbit/orbit_section.hpp"
 #include "orbit_commands.hpp"
 #include "orbit_summary.hpp"
 #include "summary.hpp"
 #include "times_option.hpp"
 
 namespace newtop::app {
-namespace {
-
-struct Tracker {
-  OrbitValues initial, max_drift;
-  double max_geometric = 0.0;  ///< max |γ·γ − γ0·γ0|, the geometric integral of docs/model.md §5
-  void observe(const OrbitValues& v) {
-    max_geometric =
-        std::max(max_geometric, std::abs(v.casimirs.gamma_gamma - initial.casimirs.gamma_gamma));
-    max_drift.integral = std::max(max_drift.integral, std::abs(v.integral - initial.integral));
-    max_drift.casimir = std::max(max_drift.casimir, v.casimir);
-  }
-};
-
-}  // namespace
 
 MethodSettings orbit_method(const io::OrbitScenario& sc, const std::optional<std::string>& method,
                             std::optional<double> cli_step, std::optional<double> cli_tol) {
@@ -123,13 +111,18 @@ int orbit_simulate(const std::string& path, const OrbitSimulateArgs& a) {
     file = std::make_unique<io::AtomicFile>(*out_path);
     file->stream() << orbit_csv_header(sc, plan.columns) << '\n';
   }
-  Tracker tr{orbit_values(sc, sc.initial, start_variable(sc)), {}};
+  const OrbitValues initial = orbit_values(sc, sc.initial, start_variable(sc));
+  OrbitSectionDrift drift;  // the integral of the run (Jacobi's or H_nu) and the Casimirs
+  drift.observe(sc.initial, &initial.integral);
+  double max_casimir_error = 0.0;
   std::int64_t count = 0;
   double last = std::nan("");
   // The observer's variable is t (circular) or ν (elliptic); rows carry the time.
   auto time_of = [&](double x) { return orbit_time(sc, x, t0); };
   auto observer = [&](double x, const OrbitState& s) {
-    tr.observe(orbit_values(sc, s, x));
+    const OrbitValues v = orbit_values(sc, s, x);
+    drift.observe(s, &v.integral);
+    max_casimir_error = std::max(max_casimir_error, v.casimir);
     if (file && !plan.times && count % plan.every == 0) {
       file->stream() << orbit_csv_row(sc, s, x, plan.columns) << '\n';
       last = x;
@@ -158,10 +151,14 @@ int orbit_simulate(const std::string& path, const OrbitSimulateArgs& a) {
     file->stream() << orbit_csv_row(sc, out.state, out.t, plan.columns) << '\n';
   }
   if (file) file->commit();
-  const OrbitRunReport rep{sc,           method,
-                           out,          time_of(out.t),
-                           tr.initial,   orbit_values(sc, out.state, out.t),
-                           tr.max_drift, tr.max_geometric,
+  const OrbitRunReport rep{sc,
+                           method,
+                           out,
+                           time_of(out.t),
+                           initial,
+                           orbit_values(sc, out.state, out.t),
+                           {drift.jacobi, max_casimir_error},
+                           drift.gamma_gamma,
                            out_path};
   if (a.json) {
     print_json(std::cout, orbit_simulation_json(rep));

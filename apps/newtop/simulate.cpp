@@ -43,30 +43,6 @@ struct RunPlan {
   std::optional<OutputTimes> times;  ///< rows at these times instead of every N-th step
 };
 
-/// Tracks max |I(t) − I(0)| of every integral that holds, and the largest |m| (the scale of the
-/// area integral's drift).
-struct DriftTracker {
-  DriftTracker(const Model& m, const State& x0) : model(m), initial(integrals(m, x0)) {
-    max_drift = initial;
-    max_drift.energy = max_drift.area = max_drift.geometric = 0.0;
-    if (max_drift.brun) max_drift.brun = 0.0;
-    if (max_drift.lagrange) max_drift.lagrange = 0.0;
-  }
-  void observe(const State& s) {
-    const IntegralValues v = integrals(model, s);
-    auto upd = [](double& m, double a, double b) { m = std::max(m, std::abs(a - b)); };
-    upd(max_drift.energy, v.energy, initial.energy);
-    upd(max_drift.area, v.area, initial.area);
-    upd(max_drift.geometric, v.geometric, initial.geometric);
-    if (v.brun) upd(*max_drift.brun, *v.brun, *initial.brun);
-    if (v.lagrange) upd(*max_drift.lagrange, *v.lagrange, *initial.lagrange);
-    max_m = std::max(max_m, s.m.norm());
-  }
-  const Model& model;
-  IntegralValues initial, max_drift;
-  double max_m = 0;
-};
-
 RunPlan make_plan(const SimulateArgs& a, const io::Scenario& sc) {
   RunPlan p;
   const io::IntegrateOverrides ov{a.method, a.step, a.tol, a.t_end, a.split};
@@ -107,13 +83,13 @@ RunPlan make_plan(const SimulateArgs& a, const io::Scenario& sc) {
 /// Runs the plan from x0 (a State, or an OrientedState with the attitude), writing the CSV rows;
 /// every step is checked for a pending SIGINT/SIGTERM.
 template <class X>
-Outcome run_plan(const RunPlan& p, const Model& model, const X& x0, DriftTracker& drift,
+Outcome run_plan(const RunPlan& p, const Model& model, const X& x0, IntegralsDrift& drift,
                  io::CsvTrajectory* csv) {
   std::int64_t count = 0;
   double last_written = std::nan("");
   auto on_step = [&](double t, const X& s) {
     throw_if_interrupted(t);
-    drift.observe(s);
+    drift.observe(model, s);
     if (csv && !p.times && count % p.every == 0) {
       csv->write(t, s);
       last_written = t;
@@ -134,16 +110,6 @@ Outcome run_plan(const RunPlan& p, const Model& model, const X& x0, DriftTracker
     }
   }
   return out;
-}
-
-/// The Casimirs γ·γ and m·γ are constants of every field's motion; their drift, relative to
-/// γ·γ(0) and to max |m|, is a lower bound of the state's relative error (δ(γ·γ) = 2γ·δγ + |δγ|²).
-CasimirCheck casimir_check(const IntegralValues& initial, const IntegralValues& drift,
-                           double max_m) {
-  CasimirCheck c;
-  c.geometric = drift.geometric / initial.geometric;
-  c.area = max_m > 0 ? drift.area / max_m : 0.0;
-  return c;
 }
 
 /// The summary or the JSON; with an exact or multipole field, the quadratic model's run `q` beside.
@@ -194,7 +160,8 @@ int run_in(const SimulateArgs& a, const io::Scenario& sc) {
         file->stream(), sc.model,
         io::AttitudeColumns{sc.attitude.has_value(), a.euler.value_or(0)});
   }
-  DriftTracker drift(model, sc.initial);
+  IntegralsDrift drift;  // from the start; max |m| over the run's states
+  drift.observe(integrals(model, sc.initial));
   const Outcome out =
       sc.attitude ? run_plan(plan, model, with_attitude(sc.initial, *sc.attitude), drift, csv.get())
                   : run_plan(plan, model, sc.initial, drift, csv.get());
@@ -211,8 +178,8 @@ int run_in(const SimulateArgs& a, const io::Scenario& sc) {
   SimulationReport rep{
       sc,           plan.method, out, drift.initial, integrals(model, out.state), drift.max_drift,
       plan.out_path};
-  rep.casimir = casimir_check(drift.initial, drift.max_drift, drift.max_m);
-  if (rep.casimir.exceeded()) warn(rep.casimir.warning());
+  rep.casimir = casimir_drift(drift);
+  if (rep.casimir.exceeded()) warn(casimir_warning(rep.casimir));
   print_report(a, sc, rep, q);
   return out.status == Status::finished ? kExitOk : kExitIncomplete;
 }

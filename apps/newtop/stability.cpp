@@ -2,6 +2,7 @@
 // state (an equilibrium or a permanent rotation) or of the spin --axis/--omega (docs/model.md
 // §7–§9); stability diagrams along Ω (--scan-omega) or over two parameters (--scan).
 
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -9,13 +10,15 @@
 #include "command.hpp"
 #include "newtop/analysis/equilibria.hpp"
 #include "newtop/analysis/stability_report.hpp"
+#include "newtop/analysis/stability_spin.hpp"
 #include "newtop/io/analysis_json.hpp"
 #include "newtop/io/json.hpp"
+#include "newtop/io/option_lists.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
+#include "newtop/sweep/stability_grid.hpp"
 #include "orbit_commands.hpp"
-#include "stability_scan.hpp"
 #include "summary.hpp"
 
 namespace newtop::app {
@@ -35,6 +38,23 @@ std::optional<int> parse_axis(const std::optional<std::string>& axis) {
   if (*axis == "y") return 1;
   if (*axis == "z") return 2;
   throw InputError("--axis: expected x, y or z, found '" + *axis + "'");
+}
+
+/// "stable", "unstable" or "inconclusive" (null) for a Lyapunov verdict.
+std::string verdict_text(const io::Json& v) {
+  return v.is_null() ? "inconclusive" : (v.get<bool>() ? "stable" : "unstable");
+}
+
+/// The --scan-omega list as a table of the human summary.
+void print_omega_scan(std::ostream& os, const io::Json& scan) {
+  print_units_line(os);  // before the table, so that the table ends the output (as sweep's)
+  os << "Omega                    max real part            linear     Lyapunov\n";
+  for (const auto& p : scan) {
+    os << std::left << std::setw(25) << format_number(p["omega"].get<double>()) << std::setw(25)
+       << format_number(p["max_real_part"].get<double>()) << std::setw(11)
+       << (p["linearly_stable"].get<bool>() ? "stable" : "unstable")
+       << verdict_text(p["lyapunov_stable"]) << "\n";
+  }
 }
 
 /// A number, or `missing` when the JSON value is null (never "null" in a human summary).
@@ -113,8 +133,7 @@ void print_report(std::ostream& os, const io::Json& j, const std::string& formul
   os << "\nmax real part " << format_number(j["max_real_part"].get<double>())
      << "\nlinear (spectral) stability: "
      << (j["linearly_stable"].get<bool>() ? "stable" : "unstable")
-     << "\nLyapunov (energy-Casimir): " << verdict_text(optional_bool(j["lyapunov_stable"]))
-     << "\n";
+     << "\nLyapunov (energy-Casimir): " << verdict_text(j["lyapunov_stable"]) << "\n";
   if (!j["axis"].is_null()) {
     os << "spin axis " << j["axis"].get<std::string>() << " (" << j["axis_class"].get<std::string>()
        << " moment); threshold Omega: formula "
@@ -152,11 +171,11 @@ int run(const StabilityArgs& a) {
   if (a.out && !a.scan && !a.scan_omega) {
     throw InputError("--out: needs --scan-omega or --scan (the diagram it holds)");
   }
-  const std::optional<Range> omega_range =
-      a.scan_omega ? std::optional(parse_range("--scan-omega", *a.scan_omega, false))
+  const std::optional<io::Range> omega_range =
+      a.scan_omega ? std::optional(io::parse_range("--scan-omega", *a.scan_omega, false))
                    : std::nullopt;
-  const std::optional<std::pair<Range, Range>> grid =
-      a.scan ? std::optional(parse_grid(*a.scan)) : std::nullopt;
+  const std::optional<std::pair<io::Range, io::Range>> grid =
+      a.scan ? std::optional(io::parse_grid(*a.scan)) : std::nullopt;
   const io::Scenario sc = io::load_scenario(a.scenario);
   if (a.axis || a.scan || a.scan_omega) {
     require_quadratic(sc.model, sc.source,
@@ -176,8 +195,19 @@ int run(const StabilityArgs& a) {
   if (a.out) file = std::make_unique<io::AtomicFile>(*a.out, sc.input_files);
   io::Json j = io::to_json(c, sc.model.body());
   if (a.equilibrium) j["equilibrium"] = *a.equilibrium;
-  if (omega_range) j["scan"] = omega_scan(sc.model.quadratic(), *c.axis, *omega_range, file.get());
-  if (grid) grid_scan(sc.model.quadratic(), *c.axis, a.omega.value_or(0.0), *grid, *file);
+  if (omega_range) {
+    const auto& r = *omega_range;
+    const std::vector<ScanPoint> scan = scan_omega(sc.model.quadratic(), *c.axis, r.lo, r.hi, r.n);
+    j["scan"] = io::to_json(scan);
+    if (file) io::write_csv(file->stream(), scan);
+  }
+  if (grid) {
+    const auto& [r1, r2] = *grid;
+    io::write_csv(file->stream(),
+                  sweep::stability_grid(sc.model.quadratic(), *c.axis, a.omega.value_or(0.0),
+                                        {r1.name, r1.values()}, {r2.name, r2.values()}));
+  }
+  if (file) file->commit();
   if (a.out) j["csv"] = *a.out;
   j["model"] = model_json(sc.model);
   j["field"] = field_json(sc.model);

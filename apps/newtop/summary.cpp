@@ -135,9 +135,10 @@ void require_quadratic(const Model& m, const std::string& source, const std::str
                    field_line(m) + " field");
 }
 
-std::string CasimirCheck::warning() const {
-  return "the Casimirs drifted by |d(gamma.gamma)|/gamma.gamma = " + fmt(geometric, 3) +
-         " and |d(m.gamma)|/max|m| = " + fmt(area, 3) + ", beyond " + fmt(kThreshold, 3) +
+std::string casimir_warning(const CasimirDrift& c) {
+  return "the Casimirs drifted by |d(gamma.gamma)|/gamma.gamma = " + fmt(c.geometric, 3) +
+         " and |d(m.gamma)|/max|m| = " + fmt(c.area, 3) + ", beyond " +
+         fmt(CasimirDrift::kThreshold, 3) +
          ": the state is wrong by at least half that (relative); tighten the tolerance or the "
          "step";
 }
@@ -178,10 +179,10 @@ io::Json simulation_json(const SimulationReport& r) {
                     {"max_abs_drift", io::to_json(r.max_drift)}};
   j["casimir_drift"] = {{"geometric", r.casimir.geometric},
                         {"area", r.casimir.area},
-                        {"threshold", CasimirCheck::kThreshold},
+                        {"threshold", CasimirDrift::kThreshold},
                         {"exceeded", r.casimir.exceeded()}};
   j["warnings"] = io::Json::array();
-  if (r.casimir.exceeded()) j["warnings"].push_back(r.casimir.warning());
+  if (r.casimir.exceeded()) j["warnings"].push_back(casimir_warning(r.casimir));
   j["conserved"] = conserved_integrals(r.scenario.model);
   j["model"] = model_json(r.scenario.model);
   if (r.csv_path) j["csv"] = *r.csv_path;

@@ -9,24 +9,12 @@
 #include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
+#include "newtop/model/integrals.hpp"
 
 namespace newtop::app {
 
-/// The drift of the Casimirs over a run, relative: max |γ·γ − γ0·γ0| / γ0·γ0 and
-/// max |m·γ − m0·γ0| / max |m|. It bounds the state's relative error from below (δ(γ·γ) ≈ 2γ·δγ),
-/// so beyond kThreshold = 1e-6 the state is certainly wrong in its sixth digit, and the run is
-/// flagged. A splitting method keeps both at round-off (~1e-13 over 1e6 steps). An adaptive method
-/// at tolerance τ drifts linearly in time, by 0.1–4 τ per unit of time on the examples (brun,
-/// lagrange_like, heavy_top, coulomb at τ = 1e-4 … 1e-12 over T = 100 and 1e4): the warning fires
-/// where τ·T approaches 1e-6 (τ = 1e-8 over 1e4) and never at the default 1e-12 before T ~ 1e6.
-struct CasimirCheck {
-  static constexpr double kThreshold = 1e-6;
-  double geometric = 0.0;
-  double area = 0.0;
-  bool exceeded() const { return !(geometric <= kThreshold && area <= kThreshold); }
-  /// One line for stderr.
-  std::string warning() const;
-};
+/// One line for stderr: the Casimirs drifted beyond CasimirDrift::kThreshold.
+std::string casimir_warning(const CasimirDrift& c);
 
 struct SimulationReport {
   const io::Scenario& scenario;
@@ -34,7 +22,7 @@ struct SimulationReport {
   const Outcome& outcome;
   IntegralValues initial, final_values, max_drift;
   std::optional<std::string> csv_path;
-  CasimirCheck casimir{};
+  CasimirDrift casimir{};
 };
 
 io::Json simulation_json(const SimulationReport& r);

@@ -22,6 +22,7 @@
 #include "newtop/core/types.hpp"
 #include "newtop/exact/exact_field.hpp"
 #include "newtop/exact/mass_models.hpp"
+#include "newtop/exact/model_fields.hpp"
 #include "newtop/exact/multipole.hpp"
 #include "newtop/exact/polyhedron.hpp"
 #include "newtop/integrate/composition_tables.hpp"

@@ -26,9 +26,10 @@ try:  # the compiled extension, when the build made one (PYTHONPATH=build/python
                           StabilityReport)
     from ._newtop import (DebraDelpDiagram, OrbitModel, OrbitScenario, OrbitState,  # noqa: F401
                           RelativeEquilibria, RelativeStability, debra_delp)
-    from .commands import (field, find_integrals, integrals, libration, rotations,  # noqa: F401
-                           simulate, sweep, view)
-    from .analyses import analytic, chaos, equilibria, section, stability  # noqa: F401
+    from ._newtop import IntegralSearch, RotationFamilies  # noqa: F401
+    from .commands import integrals, libration, simulate, view  # noqa: F401
+    from .analyses import (analytic, chaos, equilibria, field, find_integrals,  # noqa: F401
+                           rotations, section, stability, sweep)
 
     HAVE_EXTENSION = True
 except ModuleNotFoundError as e:  # absent is fine; present but broken is an error
@@ -38,10 +39,12 @@ except ModuleNotFoundError as e:  # absent is fine; present but broken is an err
 
 __all__ = ["HAVE_EXTENSION", "__version__"]
 if HAVE_EXTENSION:
-    __all__ += ["AnalyticResult", "ChaosResult", "Equilibria", "Section", "StabilityReport",
+    __all__ += ["AnalyticResult", "ChaosResult", "Equilibria", "IntegralSearch", "RotationFamilies",
+                "Section", "StabilityReport",
                 "Body", "InputError", "MassModel", "Model", "QuadraticField", "Scenario", "State",
                 "analytic", "chaos", "conserved_integrals", "equilibria", "field", "find_integrals",
-                "integrals", "integrals_at", "integrate", "integrate_ensemble", "chaos_ensemble", "is_orbit_scenario", "libration",
+                "integrals", "integrals_at", "integrate", "integrate_ensemble", "chaos_ensemble",
+                "is_orbit_scenario", "libration",
                 "load_scenario", "parse_scenario", "rotations", "section", "simulate", "stability", "sweep",
                 "view", "DebraDelpDiagram", "OrbitModel", "OrbitScenario", "OrbitState",
                 "RelativeEquilibria", "RelativeStability", "debra_delp"]

@@ -6,6 +6,8 @@ the command line, bit for bit); given a path (or a ``Scenario`` read from a file
 subcommand's JSON as a dict (``newtop.commands``), as before.
 """
 
+import os
+
 import numpy as np
 
 from . import _newtop
@@ -157,4 +159,140 @@ def analytic(model, state=None, times=None, *, max_steps=None, **options):
                              max_steps=max_steps)
 
 
-__all__ = ["analytic", "chaos", "equilibria", "section", "stability"]
+def rotations(model, *, samples=180, **options):
+    """The families of permanent rotations (docs/model.md §8): ``RotationFamilies`` with
+    ``principal_axes`` (K, 3), ``any_axis_omega``, ``cone_is_whole_sphere``, ``cone_gamma``
+    (N, 3), ``cone_omega_squared`` (N), ``cone_admissible`` (N, bool).
+    Given a path: ``newtop rotations PATH --json [options]`` as a dict."""
+    if not _is_native(model):
+        return commands.rotations(model, samples=samples if samples != 180 else None, **options)
+    if options:
+        raise TypeError("rotations(model): unexpected options %s" % sorted(options))
+    m, _ = _model_state(model, None)
+    return _newtop._rotations(m, samples=samples)
+
+
+def find_integrals(model, *, degree=2, points=0, **options):
+    """Numerical search for first integrals polynomial in (omega, gamma) up to ``degree``:
+    ``IntegralSearch`` with ``monomials``, ``coefficients`` (K, monomials), ``names``, ``rank``,
+    ``gap``, ``singular_values``. Given a path: ``newtop find-integrals PATH --json`` as a dict."""
+    if not _is_native(model):
+        return commands.find_integrals(model, degree=degree, points=points or None, **options)
+    if options:
+        raise TypeError("find_integrals(model): unexpected options %s" % sorted(options))
+    m, _ = _model_state(model, None)
+    return _newtop._find_integrals(m, degree=degree, points=points)
+
+
+def field(model, gamma=None, *, R=None, scan_R=None, **options):
+    """The exact field of the model's mass model against its quadratic model at ``gamma`` (the
+    mass model's frame, normalised): a dict with ``mu``, ``R``, ``gamma`` (principal axes),
+    ``exact``, ``approx``, ``difference`` (each ``potential``, ``grad_gamma``, ``dV_dR``,
+    ``moment``, ``force``, ``hessian_gamma``), ``approx_truncation_error``, ``input_frame``, and
+    with ``scan_R=(R1, R2, N)`` the ``scan`` of the quadratic model's error over R (arrays).
+    Given a path: ``newtop field PATH --gamma ... --json [options]`` as a dict."""
+    if not _is_native(model):
+        scan = scan_R if scan_R is None or isinstance(scan_R, str) else "%r:%r:%d" % (
+            float(scan_R[0]), float(scan_R[1]), int(scan_R[2]))
+        return commands.field(model, gamma=gamma, R=R, scan_R=scan, **options)
+    if options:
+        raise TypeError("field(model): unexpected options %s" % sorted(options))
+    if gamma is None:
+        raise ValueError("gamma: missing: give the direction of the centre")
+    m, _ = _model_state(model, None)
+    scan = None if scan_R is None else (float(scan_R[0]), float(scan_R[1]), int(scan_R[2]))
+    return _newtop._field(m, np.asarray(gamma, dtype=float), R=R, scan_R=scan)
+
+
+def _toml(value):
+    """A TOML value: numbers in their shortest round-trip form, strings quoted, lists."""
+    if isinstance(value, str):
+        return '"' + value.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (list, tuple, np.ndarray)):
+        return "[" + ", ".join(_toml(v) for v in value) + "]"
+    if isinstance(value, (int, np.integer)):
+        return str(int(value))
+    return repr(float(value))
+
+
+def _table(name, keys):
+    lines = ["[%s]" % name]
+    lines += ["%s = %s" % (k, _toml(v)) for k, v in keys.items() if v is not None]
+    return "\n".join(lines) + "\n"
+
+
+def scenario_text(model, state=None, *, t0=0.0, t_end=None, method=None, step=None, tol=None):
+    """The scenario file of a quadratic-field Model built in code (a body given by its principal
+    moments) and a state, as TOML text: what newtop.sweep runs a Model or a Scenario built in
+    code on. The state is written as (omega, gamma)."""
+    if isinstance(model, _newtop.Scenario):
+        sc = model
+        model, state = sc.model, sc.initial if state is None else state
+        t0 = sc.t0 if hasattr(sc, "t0") else t0
+        t_end = sc.t_end if t_end is None else t_end
+        if method is None and step is None and tol is None:
+            method, step, tol = sc.method, sc.step, sc.tol
+    if model.kind != "quadratic":
+        raise ValueError("base: expected a model of the quadratic field built in code, found "
+                         "the %s field (give its scenario file)" % model.kind)
+    body = model.body
+    if not np.array_equal(np.asarray(body.principal_axes), np.eye(3)):
+        raise ValueError("base: expected a body given by its principal moments (principal axes "
+                         "the identity), found other principal axes")
+    if state is None:
+        raise ValueError("base: a Model needs state= (the initial state of every point)")
+    state = _state(state)
+    field = model.field
+    text = _table("body", {"inertia": list(body.inertia), "mass": body.mass,
+                           "center_of_mass": list(body.center_of_mass),
+                           "gyrostat": list(body.gyrostat)})
+    text += _table("field", {"g": field.g, "lambda": field.lambda_})
+    text += _table("initial", {"omega": list(state.omega(body)), "gamma": list(state.gamma)})
+    integrate = {"t0": t0 if t0 else None, "t_end": t_end, "method": method, "step": step,
+                 "tol": tol}
+    if any(v is not None for v in integrate.values()):
+        text += _table("integrate", integrate)
+    return text
+
+
+def sweep(base, axes=None, quantities=None, *, threads=0, state=None, combine="grid",
+          stability=None, integrate=None, **options):
+    """Quantities over a grid (or zip) of values of scenario keys, with no sweep file:
+    ``axes={key: values}`` (``initial.omega[0]``, ``field.lambda``, ``stability.omega``, ...),
+    ``quantities=[...]`` (docs/sweep.md), ``threads`` (0: all cores); ``base`` a Scenario or a
+    Model built in code (with ``state=``), a Scenario read from a file or a scenario path;
+    ``stability={"axis": "z", "omega": 1.0}`` and ``integrate={"t_end": ..., "step": ...}``
+    as a sweep file's tables. A dict with ``points``, ``failed``, ``off_level``, ``threads``,
+    ``quantities`` and ``results``: one numpy array per axis and column in point order (the last
+    axis fastest; NaN where a point failed or a verdict is inconclusive) and ``status``.
+    Without ``axes``, ``base`` is a sweep file: ``newtop sweep PATH --json`` as a dict."""
+    if axes is None:
+        return commands.sweep(base, **options)
+    if options:
+        raise TypeError("sweep(base, axes=...): unexpected options %s" % sorted(options))
+    if not quantities:
+        raise ValueError("quantities: expected at least one quantity, found none")
+    if isinstance(base, _newtop.Scenario) and base.source != "<python>":
+        base = base.source
+    if isinstance(base, (str, os.PathLike)):
+        source = os.fspath(base)
+        with open(source, encoding="utf-8") as f:
+            base_text = f.read()
+    else:
+        source, base_text = "<python>", scenario_text(base, state)
+    text = "scenario = %s\nquantities = %s\ncombine = %s\n" % (
+        _toml(source), _toml(list(quantities)), _toml(combine))
+    if stability:
+        text += _table("stability", dict(stability))
+    if integrate:
+        text += _table("integrate", dict(integrate))
+    for key, values in axes.items():
+        text += "[[axes]]\nkey = %s\nvalues = %s\n" % (
+            _toml(key), _toml([float(v) for v in np.atleast_1d(values)]))
+    return _newtop._sweep(text, source, base_text, threads=threads)
+
+
+__all__ = ["analytic", "chaos", "equilibria", "field", "find_integrals", "rotations", "scenario_text",
+           "section", "stability", "sweep"]

@@ -36,6 +36,10 @@ MethodSettings method_settings(const Model& model, const std::optional<std::stri
 /// package (command_line.cpp).
 void bind_command_line(pybind11::module_& m);
 
+/// rotations and field on Python objects (fields.cpp).
+void bind_fields(pybind11::module_& m);
+/// _sweep: a sweep without files (sweep.cpp).
+void bind_sweep(pybind11::module_& m);
 /// resonance_family, rotation_family, equilibrium_family (continuation.cpp).
 void bind_continuation(pybind11::module_& m);
 

@@ -5,6 +5,8 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <optional>
+
 #include "bindings.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/scenario.hpp"
@@ -123,6 +125,13 @@ void bind_model_class(py::module_& m) {
       "the exact field of a mass model or its multipole expansion (docs/model.md §2).")
       .def(py::init<const Body&, const QuadraticField&>(), py::arg("body"), py::arg("field"))
       .def_property_readonly("body", &Model::body)
+      .def_property_readonly(
+          "field",
+          [](const Model& x) -> std::optional<QuadraticField> {
+            if (x.kind() != FieldKind::quadratic) return std::nullopt;
+            return x.quadratic().field;
+          },
+          "the QuadraticField of a quadratic model; None for an exact or multipole one")
       .def_property_readonly(
           "kind", [](const Model& x) { return std::string(to_string(x.kind())); },
           "'quadratic', 'exact' or 'multipole'")

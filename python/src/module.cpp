@@ -16,6 +16,8 @@ PYBIND11_MODULE(_newtop, m) {
   newtop::python::bind_trajectory(m);
   newtop::python::bind_ensemble(m);
   newtop::python::bind_analyses(m);
+  newtop::python::bind_fields(m);
+  newtop::python::bind_sweep(m);
   newtop::python::bind_command_line(m);
   newtop::python::bind_continuation(m);
   newtop::python::bind_orbit(m);

@@ -1,10 +1,14 @@
 #include "newtop/analysis/field_scan.hpp"
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace newtop {
 namespace {
+
+/// A unit vector normalised in double precision has |γ| within a few ε of 1.
+constexpr double kUnitTolerance = 16 * std::numeric_limits<double>::epsilon();
 
 FieldSample difference(const FieldSample& a, const FieldSample& b) {
   const FieldValues &x = a.values, &y = b.values;
@@ -66,6 +70,34 @@ double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) 
     sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly;
   }
   return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+FieldReport field_report(const Model& model, const Vec3& gamma_input, std::optional<double> R,
+                         const std::optional<RadiusRange>& scan) {
+  const std::shared_ptr<const MassModel>& mass_model = model.mass_model();
+  if (!mass_model) throw InputError("model: expected a model built on a mass model, found none");
+  const FieldKind kind = model.kind();
+  if (kind == FieldKind::quadratic && !R) {
+    throw InputError("R: expected the distance of the centre for a quadratic model, found none");
+  }
+  if (!gamma_input.allFinite() || !(std::abs(gamma_input.norm() - 1.0) <= kUnitTolerance)) {
+    throw InputError("gamma: expected a unit vector, found " + format_vector(gamma_input) +
+                     " (|gamma| = " + format_number(gamma_input.norm()) + ")");
+  }
+  const CentreParameters centre = centre_parameters(model);
+  FieldReport r;
+  r.mu = kind == FieldKind::quadratic ? 1.0 : centre.mu;  // only R given: a centre of unit μ
+  r.R = R.value_or(centre.R);
+  const Body& body = model.body();
+  const Mat3& P = body.principal_axes();
+  const Vec3& given = gamma_input;
+  r.gamma = P.transpose() * given;  // the mass model's frame → principal axes
+  r.principal = compare_field(mass_model, body, r.mu, r.R, r.gamma);
+  r.input = in_input_frame(r.principal, P);
+  r.input.gamma = given;  // as given, not rotated there and back
+  r.truncation = truncation_error(MultipoleField::make(*mass_model, 3, r.mu, r.R, P), r.gamma);
+  if (scan) r.scan = scan_field_R(mass_model, body, r.mu, scan->R1, scan->R2, scan->n, r.gamma);
+  return r;
 }
 
 }  // namespace newtop

@@ -158,6 +158,10 @@ IntegralSearch search(const VectorField& field, const std::vector<Candidate>& ba
   s.degree = opt.degree;
   s.monomials = monomials_up_to(opt.degree);
   const auto n = static_cast<Eigen::Index>(s.monomials.size());
+  if (opt.points < 0) {
+    throw InputError("points: expected 0 (3 x the monomials) or a positive count, found " +
+                     std::to_string(opt.points));
+  }
   const int npts = opt.points > 0 ? opt.points : 3 * static_cast<int>(n);
   const std::int64_t max_points = kMaxConditionEntries / n;
   if (npts > max_points) {

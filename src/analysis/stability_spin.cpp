@@ -134,4 +134,44 @@ std::vector<ScanPoint> scan_omega(const QuadraticModel& model, int axis, double 
   return out;
 }
 
+void check_spin_parameter(const std::string& what, const std::string& name) {
+  if (name != "omega" && name != "lambda" && name != "A" && name != "B" && name != "C") {
+    throw InputError(what + ": expected a parameter omega, lambda, A, B or C, found '" + name +
+                     "'");
+  }
+}
+
+std::optional<Spectrum> spin_stability_at(const QuadraticModel& base, int axis, double omega,
+                                          const std::vector<SpinParameter>& parameters) {
+  Vec3 I = base.body.inertia();
+  double lambda = base.field.lambda_, w = omega;
+  for (const auto& [name, v] : parameters) {
+    check_spin_parameter("parameter", name);
+    if (name == "omega") w = v;
+    if (name == "lambda") lambda = v;
+    if (name == "A") I.x() = v;
+    if (name == "B") I.y() = v;
+    if (name == "C") I.z() = v;
+  }
+  try {
+    const QuadraticModel m{Body::from_principal(I, base.body.mass(), base.body.center_of_mass()),
+                           QuadraticField::coulomb(base.field.g, lambda)};
+    return spin_stability(m, axis, w);
+  } catch (const InputError&) {
+    return std::nullopt;  // e.g. the triangle inequality fails at this point
+  }
+}
+
+const char* to_string(GridVerdict v) {
+  switch (v) {
+    case GridVerdict::stable:
+      return "stable";
+    case GridVerdict::unstable:
+      return "unstable";
+    case GridVerdict::nonphysical:
+      return "nonphysical";
+  }
+  return "nonphysical";
+}
+
 }  // namespace newtop

@@ -73,4 +73,34 @@ Json to_json(const EquilibriumSet& set) {
   return j;
 }
 
+Json to_json(const std::vector<ScanPoint>& scan) {
+  Json list = Json::array();
+  for (const auto& p : scan) {
+    list.push_back({{"omega", p.omega},
+                    {"max_real_part", p.max_real_part},
+                    {"linearly_stable", p.linearly_stable},
+                    {"lyapunov_stable", optional_value(p.lyapunov_stable)}});
+  }
+  return list;
+}
+
+void write_csv(std::ostream& os, const std::vector<ScanPoint>& scan) {
+  os << "omega,max_real_part,linearly_stable,energy_casimir_stable\n";
+  for (const auto& p : scan) {
+    os << format_number(p.omega) << ',' << format_number(p.max_real_part) << ','
+       << (p.linearly_stable ? 1 : 0) << ',' << (p.lyapunov_stable.value_or(false) ? 1 : 0) << '\n';
+  }
+}
+
+void write_csv(std::ostream& os, const StabilityGrid& g) {
+  os << g.first_name << ',' << g.second_name << ",max_real_part,verdict\n";
+  const std::size_t n2 = g.second.size();
+  for (std::size_t p = 0; p < g.verdict.size(); ++p) {
+    const bool physical = g.verdict[p] != GridVerdict::nonphysical;
+    os << format_number(g.first[p / n2]) << ',' << format_number(g.second[p % n2]) << ','
+       << (physical ? format_number(g.max_real_part[p]) : "nan") << ',' << to_string(g.verdict[p])
+       << '\n';
+  }
+}
+
 }  // namespace newtop::io

@@ -10,6 +10,29 @@
 
 namespace newtop::io {
 
+template <class... T>
+std::optional<std::tuple<T...>> read_colon_values(const std::string& text) {
+  std::istringstream is(text);
+  std::tuple<T...> values;
+  bool ok = true;
+  std::size_t k = 0;
+  auto read = [&](auto& v) {
+    char colon = ':';
+    if (ok && k++ > 0) ok = static_cast<bool>(is >> colon) && colon == ':';
+    if (ok) ok = static_cast<bool>(is >> v);
+  };
+  std::apply([&](auto&... v) { (read(v), ...); }, values);
+  std::string rest;
+  if (!ok || (is >> rest)) return std::nullopt;
+  return values;
+}
+
+template std::optional<std::tuple<double, double, int>> read_colon_values<double, double, int>(
+    const std::string&);
+template std::optional<std::tuple<double, double>> read_colon_values<double, double>(
+    const std::string&);
+template std::optional<std::tuple<int, int>> read_colon_values<int, int>(const std::string&);
+
 std::vector<double> parse_times(const std::string& option, const std::string& text) {
   std::vector<double> t;
   std::stringstream ss(text);
@@ -59,10 +82,9 @@ Vec3 parse_gamma(const std::string& text) {
 
 RadiusScan parse_radius_scan(const std::string& text) {
   RadiusScan s{};
-  char c1 = 0, c2 = 0;
-  std::istringstream is(text);
-  if (!(is >> s.R1 >> c1 >> s.R2 >> c2 >> s.n) || c1 != ':' || c2 != ':' || !is.eof() ||
-      !(s.R1 > 0) || !(s.R2 > s.R1) || s.n < 2 || s.n > kMaxScanPoints) {
+  const auto v = read_colon_values<double, double, int>(text);
+  if (v) std::tie(s.R1, s.R2, s.n) = *v;
+  if (!v || !(s.R1 > 0) || !(s.R2 > s.R1) || s.n < 2 || s.n > kMaxScanPoints) {
     throw InputError("--scan-R: expected R1:R2:N with 0 < R1 < R2 and 2 <= N <= " +
                      std::to_string(kMaxScanPoints) + ", found \"" + text + "\"");
   }
@@ -77,11 +99,9 @@ Range parse_range(const std::string& flag, const std::string& text, bool named) 
     if (eq != std::string::npos) r.name = text.substr(0, eq);
     spec = eq == std::string::npos ? "" : text.substr(eq + 1);
   }
-  std::istringstream is(spec);
-  char c1 = 0, c2 = 0;
-  std::string rest;
-  if (!(is >> r.lo >> c1 >> r.hi >> c2 >> r.n) || c1 != ':' || c2 != ':' || (is >> rest) ||
-      r.n < 1 || r.n > kMaxScanPoints || !std::isfinite(r.lo) || !std::isfinite(r.hi)) {
+  const auto v = read_colon_values<double, double, int>(spec);
+  if (v) std::tie(r.lo, r.hi, r.n) = *v;
+  if (!v || r.n < 1 || r.n > kMaxScanPoints || !std::isfinite(r.lo) || !std::isfinite(r.hi)) {
     throw InputError(flag + ": expected " + (named ? "NAME=LO:HI:N" : "LO:HI:N") +
                      " (two finite numbers and a count from 1 to " +
                      std::to_string(kMaxScanPoints) + "), found '" + text + "'");
@@ -114,15 +134,12 @@ std::vector<SpinOrbitResonance> parse_resonances(const std::string& text) {
   std::stringstream ss(text);
   std::string item;
   while (std::getline(ss, item, ',')) {
-    std::istringstream is(item);
-    int p = 0, q = 0;
-    char colon = 0;
-    std::string rest;
-    if (!(is >> p >> colon >> q) || colon != ':' || (is >> rest)) {
+    const auto pq = read_colon_values<int, int>(item);
+    if (!pq) {
       throw InputError("--resonances: expected a list p:q,p:q,… of integers, found '" + item + "'");
     }
     try {
-      list.push_back(resonance(p, q));
+      list.push_back(resonance(std::get<0>(*pq), std::get<1>(*pq)));
     } catch (const InputError& e) {
       throw InputError(std::string("--resonances: ") + e.what());
     }
@@ -132,12 +149,10 @@ std::vector<SpinOrbitResonance> parse_resonances(const std::string& text) {
 }
 
 SpinScan parse_spin(const std::string& text) {
-  std::istringstream is(text);
   SpinScan s{};
-  char c1 = 0, c2 = 0;
-  std::string rest;
-  if (!(is >> s.lo >> c1 >> s.hi >> c2 >> s.n) || c1 != ':' || c2 != ':' || (is >> rest) ||
-      !std::isfinite(s.lo) || !std::isfinite(s.hi) || s.n < 1 || s.n > 10000 || s.hi < s.lo) {
+  const auto v = read_colon_values<double, double, int>(text);
+  if (v) std::tie(s.lo, s.hi, s.n) = *v;
+  if (!v || !std::isfinite(s.lo) || !std::isfinite(s.hi) || s.n < 1 || s.n > 10000 || s.hi < s.lo) {
     throw InputError(
         "--spin: expected LO:HI:N with LO <= HI finite spin rates and 1 <= N <= "
         "10000, found '" +
@@ -155,14 +170,10 @@ std::pair<RatioAxis, RatioAxis> parse_ratio_scan(const std::string& text) {
   if (comma == std::string::npos) fail();
   auto one = [&](const std::string& part, const std::string& name) {
     if (part.rfind(name + "=", 0) != 0) fail();
-    std::istringstream is(part.substr(name.size() + 1));
     RatioAxis a;
-    char c1 = 0, c2 = 0;
-    std::string rest;
-    if (!(is >> a.lo >> c1 >> a.hi >> c2 >> a.n) || c1 != ':' || c2 != ':' || (is >> rest) ||
-        a.n < 1 || !(std::abs(a.lo) < 1) || !(std::abs(a.hi) < 1)) {
-      fail();
-    }
+    const auto v = read_colon_values<double, double, int>(part.substr(name.size() + 1));
+    if (v) std::tie(a.lo, a.hi, a.n) = *v;
+    if (!v || a.n < 1 || !(std::abs(a.lo) < 1) || !(std::abs(a.hi) < 1)) fail();
     return a;
   };
   const std::pair<RatioAxis, RatioAxis> axes{one(text.substr(0, comma), "k_R"),

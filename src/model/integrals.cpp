@@ -1,5 +1,6 @@
 #include "newtop/model/integrals.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace newtop {
@@ -67,6 +68,53 @@ IntegralValues integrals(const Model& model, const State& s) {
 std::vector<std::string> conserved_integrals(const Model& model) {
   if (model.kind() == FieldKind::quadratic) return conserved_integrals(model.quadratic());
   return {"energy", "area", "geometric"};
+}
+
+void IntegralsDrift::observe(const IntegralValues& v) {
+  if (!started) {
+    started = true;
+    initial = v;
+    max_drift = v;
+    max_drift.energy = max_drift.area = max_drift.geometric = 0.0;
+    if (max_drift.brun) max_drift.brun = 0.0;
+    if (max_drift.lagrange) max_drift.lagrange = 0.0;
+    return;
+  }
+  auto upd = [](double& m, double a, double b) { m = std::max(m, std::abs(a - b)); };
+  upd(max_drift.energy, v.energy, initial.energy);
+  upd(max_drift.area, v.area, initial.area);
+  upd(max_drift.geometric, v.geometric, initial.geometric);
+  if (v.brun && initial.brun) upd(*max_drift.brun, *v.brun, *initial.brun);
+  if (v.lagrange && initial.lagrange) upd(*max_drift.lagrange, *v.lagrange, *initial.lagrange);
+}
+
+void IntegralsDrift::observe(const Model& model, const State& s) {
+  observe(integrals(model, s));
+  max_m = std::max(max_m, s.m.norm());
+}
+
+void IntegralsDrift::merge(const IntegralsDrift& other) {
+  if (!other.started) return;
+  if (!started) {
+    *this = other;
+    return;
+  }
+  auto upd = [](double& m, double v) { m = std::max(m, v); };
+  upd(max_drift.energy, other.max_drift.energy);
+  upd(max_drift.area, other.max_drift.area);
+  upd(max_drift.geometric, other.max_drift.geometric);
+  upd(max_m, other.max_m);
+  if (max_drift.brun && other.max_drift.brun) upd(*max_drift.brun, *other.max_drift.brun);
+  if (max_drift.lagrange && other.max_drift.lagrange) {
+    upd(*max_drift.lagrange, *other.max_drift.lagrange);
+  }
+}
+
+CasimirDrift casimir_drift(const IntegralsDrift& drift) {
+  CasimirDrift c;
+  c.geometric = drift.max_drift.geometric / drift.initial.geometric;
+  c.area = drift.max_m > 0 ? drift.max_drift.area / drift.max_m : 0.0;
+  return c;
 }
 
 }  // namespace newtop

@@ -64,40 +64,6 @@ int gamma_plane_axis(const Surface& s) {
   return axis;
 }
 
-void IntegralsDrift::observe(const IntegralValues& v) {
-  if (!started) {
-    started = true;
-    initial = v;
-    max_drift = v;
-    max_drift.energy = max_drift.area = max_drift.geometric = 0.0;
-    if (max_drift.brun) max_drift.brun = 0.0;
-    if (max_drift.lagrange) max_drift.lagrange = 0.0;
-    return;
-  }
-  auto upd = [](double& m, double a, double b) { m = std::max(m, std::abs(a - b)); };
-  upd(max_drift.energy, v.energy, initial.energy);
-  upd(max_drift.area, v.area, initial.area);
-  upd(max_drift.geometric, v.geometric, initial.geometric);
-  if (v.brun && initial.brun) upd(*max_drift.brun, *v.brun, *initial.brun);
-  if (v.lagrange && initial.lagrange) upd(*max_drift.lagrange, *v.lagrange, *initial.lagrange);
-}
-
-void IntegralsDrift::merge(const IntegralsDrift& other) {
-  if (!other.started) return;
-  if (!started) {
-    *this = other;
-    return;
-  }
-  auto upd = [](double& m, double v) { m = std::max(m, v); };
-  upd(max_drift.energy, other.max_drift.energy);
-  upd(max_drift.area, other.max_drift.area);
-  upd(max_drift.geometric, other.max_drift.geometric);
-  if (max_drift.brun && other.max_drift.brun) upd(*max_drift.brun, *other.max_drift.brun);
-  if (max_drift.lagrange && other.max_drift.lagrange) {
-    upd(*max_drift.lagrange, *other.max_drift.lagrange);
-  }
-}
-
 namespace {
 
 /// The root a of α a² + 2β a + (κ − h) = 0 that makes g cross in the kept direction (ġ(a) of that

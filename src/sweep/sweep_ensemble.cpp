@@ -93,16 +93,13 @@ std::optional<RunKey> run_key(const SweepFile& s, const io::Scenario& sc) {
                 sc.integrate.max_steps.value_or(IntegrateOptions{}.max_steps)};
 }
 
-struct Drift {
-  double energy = 0, area = 0, geometric = 0;
-};
-
 /// The values of evaluate_point for a finished run.
 PointResult finished(const SweepFile& s, const Member& p, double t, const State& x,
-                     const Drift& d) {
+                     const IntegralsDrift& drift) {
   PointResult r{"ok", {}};
   for (const std::string& q : s.quantities) {
     if (q == "drift") {
+      const IntegralValues& d = drift.max_drift;
       r.values.insert(r.values.end(), {d.energy, d.area, d.geometric});
     } else if (q == "final_state") {
       const Vec3 w = omega(p.model.body(), x);
@@ -124,11 +121,12 @@ void run_group(const SweepFile& s, const Group& g, std::vector<std::optional<Poi
   EnsembleStepper stepper(composition_table(k.method.name), k.ordering);
 
   EnsembleState x;
-  std::vector<IntegralValues> i0;
+  std::vector<IntegralsDrift> drift(g.members.size());
   std::vector<QuadraticModel> models;
-  for (const Member& p : g.members) {
+  for (std::size_t j = 0; j < g.members.size(); ++j) {
+    const Member& p = g.members[j];
     x.push_back(p.initial);
-    i0.push_back(integrals(p.model, p.initial));
+    drift[j].observe(integrals(p.model, p.initial));
     models.push_back(p.quadratic);
   }
   // One model for all: its constants splatted; several (a sweep over the body or the field): a
@@ -139,7 +137,6 @@ void run_group(const SweepFile& s, const Group& g, std::vector<std::optional<Poi
   const std::optional<EnsembleModels> lanes =
       one_model ? std::nullopt : std::optional<EnsembleModels>(std::in_place, models, k.ordering);
   const std::size_t size = g.members.size();
-  std::vector<Drift> drift(size);
   std::vector<bool> alive(size, true);
   // A non-finite component stays non-finite through every rotation, spin and kick (each adds to
   // it), so without an observer the state is checked every `chunk` steps; the exact free-body
@@ -163,11 +160,7 @@ void run_group(const SweepFile& s, const Group& g, std::vector<std::optional<Poi
         alive[j] = false;
         out[g.members[j].slot] = PointResult{std::string(to_string(Status::non_finite)), {}};
       } else if (every_step) {
-        const IntegralValues v = integrals(g.members[j].model, xj);
-        Drift& d = drift[j];
-        d.energy = std::max(d.energy, std::abs(v.energy - i0[j].energy));
-        d.area = std::max(d.area, std::abs(v.area - i0[j].area));
-        d.geometric = std::max(d.geometric, std::abs(v.geometric - i0[j].geometric));
+        drift[j].observe(integrals(g.members[j].model, xj));
       }
     }
   }

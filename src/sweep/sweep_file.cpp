@@ -236,12 +236,31 @@ void read_axes(const toml::table& doc, SweepFile& s) {
   }
 }
 
+
+/// The base scenario's model (fixed point, circular or elliptic orbit) from its text, and the
+/// quantities and keys that apply to it (check_model).
+void set_base_model(SweepFile& s) {
+  s.model = base_model(s.base_text);
+  check_model(s);
+}
+
 }  // namespace
 
 SweepFile read_sweep(const std::string& path) {
+  SweepFile s = parse_sweep(io::read_regular_file(path, io::kMaxTomlBytes, "sweep file"), path);
+  const std::filesystem::path base_path(s.base_source);
+  s.base_source = base_path.is_absolute()
+                      ? s.base_source
+                      : (std::filesystem::path(path).parent_path() / base_path).string();
+  s.base_text = io::read_regular_file(s.base_source, io::kMaxTomlBytes, "scenario file");
+  set_base_model(s);
+  return s;
+}
+
+SweepFile parse_sweep(const std::string& text, const std::string& path) {
   SweepFile s;
   s.source = path;
-  s.text = io::read_regular_file(path, io::kMaxTomlBytes, "sweep file");
+  s.text = text;
   const toml::table doc = io::parse_toml(s.text, path);
   io::TableReader top(doc, path, "");
   for (const auto& [key, node] : doc) {
@@ -254,11 +273,7 @@ SweepFile read_sweep(const std::string& path) {
                 "unknown key in a sweep file" + (close ? " — did you mean '" + *close + "'?"
                                                        : " (expected one of: " + list + ")"));
   }
-  const std::string base = top.string("scenario");
-  const std::filesystem::path base_path(base);
-  s.base_source = base_path.is_absolute()
-                      ? base
-                      : (std::filesystem::path(path).parent_path() / base_path).string();
+  s.base_source = top.string("scenario");
   s.quantities = top.strings("quantities");
   for (const std::string& q : s.quantities) {
     const auto& known = known_quantities();
@@ -301,14 +316,21 @@ SweepFile read_sweep(const std::string& path) {
                        "': expected the inertia ratios or the moments body.inertia[i], found both");
     }
   }
-  s.base_text = io::read_regular_file(s.base_source, io::kMaxTomlBytes, "scenario file");
-  s.model = base_model(s.base_text);
-  check_model(s);
   return s;
 }
 
 SweepFile load_sweep(const std::string& path) {
   SweepFile s = read_sweep(path);
+  check_points(s);
+  return s;
+}
+
+SweepFile make_sweep(const std::string& text, const std::string& base_source,
+                     const std::string& base_text) {
+  SweepFile s = parse_sweep(text, "sweep");
+  s.base_source = base_source;
+  s.base_text = base_text;
+  set_base_model(s);
   check_points(s);
   return s;
 }

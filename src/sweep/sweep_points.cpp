@@ -46,7 +46,7 @@ State stability_state(const io::Scenario& sc, const StabilityOptions& o) {
 /// One run of the point's scenario: the final state and the drift of the integrals.
 struct RunResult {
   Outcome outcome;
-  double drift_energy = 0, drift_area = 0, drift_geometric = 0;
+  IntegralsDrift drift;
 };
 
 RunResult run(const SweepFile& s, const io::Scenario& sc) {
@@ -55,13 +55,8 @@ RunResult run(const SweepFile& s, const io::Scenario& sc) {
   IntegrateOptions options;
   if (sc.integrate.max_steps) options.max_steps = *sc.integrate.max_steps;
   RunResult r;
-  const IntegralValues i0 = integrals(sc.model, sc.initial);
-  auto observe = [&](double, const State& x) {
-    const IntegralValues v = integrals(sc.model, x);
-    r.drift_energy = std::max(r.drift_energy, std::abs(v.energy - i0.energy));
-    r.drift_area = std::max(r.drift_area, std::abs(v.area - i0.area));
-    r.drift_geometric = std::max(r.drift_geometric, std::abs(v.geometric - i0.geometric));
-  };
+  r.drift.observe(integrals(sc.model, sc.initial));
+  auto observe = [&](double, const State& x) { r.drift.observe(integrals(sc.model, x)); };
   r.outcome = run_method(method, sc.model, sc.initial, sc.integrate.t0, t1, options, observe);
   return r;
 }
@@ -203,8 +198,8 @@ PointResult evaluate_point(const SweepFile& s, std::size_t index) {
       r.values.push_back(sp.lyapunov_stable ? (*sp.lyapunov_stable ? 1.0 : 0.0) : kNaN);
       r.values.push_back(sp.max_real_part);
     } else if (q == "drift") {
-      r.values.insert(r.values.end(),
-                      {traj->drift_energy, traj->drift_area, traj->drift_geometric});
+      r.values.insert(r.values.end(), {traj->drift.max_drift.energy, traj->drift.max_drift.area,
+                                       traj->drift.max_drift.geometric});
     } else if (q == "equilibria") {
       const EquilibriumSet e = find_equilibria(sc.model);
       r.values.insert(r.values.end(),

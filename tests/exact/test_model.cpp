@@ -9,6 +9,7 @@
 #include <string>
 
 #include "bodies.hpp"
+#include "newtop/exact/model_fields.hpp"
 #include "newtop/model/integrals.hpp"
 #include "newtop/model/model.hpp"
 
@@ -21,6 +22,26 @@ const Vec3 kGamma = Vec3(0.3, -0.5, 0.8).normalized();
 // At R = 4r the closed forms lose at most 100 ε (R/r)² ≈ 3.6e-13 of V and of the Hessian
 // (tests/exact/test_hessian.cpp), the series and the sums a few ε: 1e-12 relative bounds both.
 constexpr double kValueTol = 1e-12;
+
+TEST(Model, ExactFieldAccessorGivesTheFieldOfItsKindOnly) {
+  const std::vector<test::Case> all = test::cases();
+  const test::Case& c = all.front();
+  const double R = 4.0 * max_radius(*c.model);
+  const Model exact = Model::exact(c.model, 2.5, R);
+  const Model multipole = Model::multipole(c.model, 3, 2.5, R);
+  const Model quadratic = quadratic_approximation(exact);
+  ASSERT_NE(exact_field(exact), nullptr);
+  EXPECT_EQ(exact_field(exact)->R, R);
+  EXPECT_EQ(exact_field(exact)->mass_model, c.model);
+  // The field the steppers run on, the same object.
+  EXPECT_EQ(&exact_model(exact).field, exact_field(exact));
+  EXPECT_EQ(potential(exact_model(exact), kGamma), potential(exact, kGamma));
+  EXPECT_EQ(exact_field(multipole), nullptr);
+  EXPECT_EQ(exact_field(quadratic), nullptr);
+  ASSERT_NE(multipole_field(multipole), nullptr);
+  EXPECT_EQ(multipole_field(multipole)->order, 3);
+  EXPECT_THROW(exact_model(multipole), InputError);
+}
 
 TEST(Model, ExactFieldIsTheMassModelsFieldInThePrincipalAxes) {
   const double mu = 2.5;

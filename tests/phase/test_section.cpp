@@ -120,7 +120,7 @@ TEST(Section, ExactFieldCrossingsOnTheSurface) {
       {1.0, 0.7, 0.5, 0.9},
       {Vec3(0.3, 0.1, -0.2), Vec3(-0.4, 0.2, 0.1), Vec3(0.1, -0.5, 0.3), Vec3(0.0, 0.2, -0.4)}));
   const Model model = Model::exact(points, 2.0, 3.0 * max_radius(*points));
-  const auto& exact = std::get<BasicModel<ExactField>>(model.variant());
+  const BasicModel<ExactField>& exact = exact_model(model);
   const State x0 = state_from_omega(exact.body, Vec3(0.5, 1.1, -0.4), Vec3(0.48, -0.6, 0.64));
   const SectionResult r = section(exact, x0, "gamma2 = 0", fixed("splitting4", 0.01), 40.0);
   ASSERT_GE(r.crossings.size(), 2u);

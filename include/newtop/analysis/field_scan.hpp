@@ -5,10 +5,12 @@
 /// in the mass model's own (input) frame, and the error of the quadratic model against R.
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "newtop/exact/exact_field.hpp"
 #include "newtop/exact/multipole.hpp"
+#include "newtop/model/model.hpp"
 
 namespace newtop {
 
@@ -42,6 +44,30 @@ struct FieldScan {
 };
 FieldScan scan_field_R(const std::shared_ptr<const MassModel>& mass_model, const Body& body,
                        double mu, double R1, double R2, int n, const Vec3& gamma);
+
+/// What `newtop field` reports for a model built on a mass model: the centre (μ, R), γ in the
+/// principal axes, the comparison there and in the mass model's frame (input.gamma the γ given),
+/// the truncation error of the quadratic model, and the R-scan when asked.
+struct FieldReport {
+  double mu = 1.0, R = 0.0;
+  Vec3 gamma = Vec3::UnitZ();  ///< principal axes
+  FieldComparison principal, input;
+  TruncationError truncation;
+  std::optional<FieldScan> scan;
+};
+
+/// The R-scan of field_report: n distances from R1 to R2 (scan_field_R).
+struct RadiusRange {
+  double R1, R2;
+  int n;
+};
+
+/// The field of `model` (which must have a mass model) at the direction `gamma_input` (a unit
+/// vector in the mass model's frame, as io::parse_gamma gives it) for the centre of the model's
+/// exact or multipole field, or at distance `R` (a quadratic model needs R; μ = 1 then). Throws
+/// InputError naming what is missing.
+FieldReport field_report(const Model& model, const Vec3& gamma_input, std::optional<double> R,
+                         const std::optional<RadiusRange>& scan = std::nullopt);
 
 /// Least-squares slope of log y against log x.
 double loglog_slope(const std::vector<double>& x, const std::vector<double>& y);

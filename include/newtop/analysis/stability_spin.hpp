@@ -5,6 +5,7 @@
 /// scans.
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "newtop/analysis/stability.hpp"
@@ -70,5 +71,36 @@ inline constexpr int kMaxScanPoints = 100000;
 /// kMaxScanPoints; throws InputError otherwise or for a non-finite end.
 std::vector<ScanPoint> scan_omega(const QuadraticModel& model, int axis, double w1, double w2,
                                   int n);
+
+/// A parameter of a spin's stability diagram and its value: `omega` (the spin rate Ω), `lambda`
+/// (λ of the Coulomb field), `A`, `B` or `C` (the principal moments).
+struct SpinParameter {
+  std::string name;
+  double value;
+};
+
+/// Throws InputError unless `name` is omega, lambda, A, B or C; `what` names the option.
+void check_spin_parameter(const std::string& what, const std::string& name);
+
+/// The spin's spectrum about `axis` at Ω = omega in the model `base` with the parameters replaced
+/// (the body rebuilt from its principal moments, mass and centre of mass; the field as Coulomb's
+/// with base's g and the λ given). nullopt where the parameters make no body (a moment ≤ 0, the
+/// triangle inequality fails): the point is nonphysical.
+std::optional<Spectrum> spin_stability_at(const QuadraticModel& base, int axis, double omega,
+                                          const std::vector<SpinParameter>& parameters);
+
+/// The verdict at one point of a two-parameter diagram.
+enum class GridVerdict { stable, unstable, nonphysical };
+/// "stable", "unstable", "nonphysical".
+const char* to_string(GridVerdict v);
+
+/// A two-parameter stability diagram of a spin (`newtop stability --scan`): the point (first[i],
+/// second[k]) at index i·second.size() + k (the second parameter varies fastest).
+struct StabilityGrid {
+  std::string first_name, second_name;
+  std::vector<double> first, second;
+  std::vector<double> max_real_part;  ///< NaN where nonphysical
+  std::vector<GridVerdict> verdict;
+};
 
 }  // namespace newtop

@@ -6,7 +6,9 @@
 /// returns the values or throws InputError naming the option, what was expected and what was
 /// found (one line).
 
+#include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -15,6 +17,14 @@
 #include "newtop/orbit/spin_orbit.hpp"
 
 namespace newtop::io {
+
+/// The one reader of the colon-separated values of the command line ("LO:HI:N", "A:B", "P:Q"):
+/// the values of types T... (double or int) separated by ':', blanks allowed around each, nothing
+/// after; std::nullopt when the text is not of that form. Each option's parser below checks its
+/// own bounds and names the option in its message. Compiled for (double, double, int),
+/// (double, double) and (int, int).
+template <class... T>
+std::optional<std::tuple<T...>> read_colon_values(const std::string& text);
 
 /// The finite times of a comma-separated list, in the order given; throws InputError naming the
 /// option and the item that is not a number.
@@ -36,6 +46,11 @@ struct Range {
   double lo, hi;
   int n;
   double at(int k) const { return n == 1 ? lo : lo + (hi - lo) * k / (n - 1); }
+  std::vector<double> values() const {
+    std::vector<double> v;
+    for (int k = 0; k < n; ++k) v.push_back(at(k));
+    return v;
+  }
 };
 
 /// "LO:HI:N" (or "NAME=LO:HI:N" when `named`, NAME in omega, lambda, A, B, C), N from 1 to

@@ -75,4 +75,40 @@ IntegralValues integrals(const Model& model, const State& s);
 /// The names of the integrals conserved in the model's own field (as integrals(Model, s) fills).
 std::vector<std::string> conserved_integrals(const Model& model);
 
+/// The drift of the integrals over a run (docs/model.md §5): the largest |I(x) − I(x0)| of each
+/// integral that holds, x0 being the first state observed, and the largest |m| seen (the scale of
+/// the area integral's drift). The one observer of the integrals' drift of every run: simulate,
+/// section, sweep points and ensembles feed it the integrals at each accepted step.
+struct IntegralsDrift {
+  IntegralValues initial;    ///< the integrals at the first state observed
+  IntegralValues max_drift;  ///< max |I − I(x0)|, with brun/lagrange where `initial` has them
+  double max_m = 0.0;        ///< max |m| over the states given to observe(model, s)
+  bool started = false;
+
+  /// The integrals at the next state; the first one is the start.
+  void observe(const IntegralValues& v);
+  /// The integrals of the model's own field at s, and |m|.
+  void observe(const Model& model, const State& s);
+  /// Takes the larger drift of each integral from another run (each against its own start).
+  void merge(const IntegralsDrift& other);
+};
+
+/// The drift of the Casimirs over a run, relative: max |γ·γ − γ0·γ0| / γ0·γ0 and
+/// max |m·γ − m0·γ0| / max |m|. It bounds the state's relative error from below (δ(γ·γ) ≈ 2γ·δγ),
+/// so beyond kThreshold = 1e-6 the state is certainly wrong in its sixth digit, and the run is
+/// flagged. A splitting method keeps both at round-off (~1e-13 over 1e6 steps). An adaptive method
+/// at tolerance τ drifts linearly in time, by 0.1–4 τ per unit of time on the examples (brun,
+/// lagrange_like, heavy_top, coulomb at τ = 1e-4 … 1e-12 over T = 100 and 1e4): the flag is raised
+/// where τ·T approaches 1e-6 (τ = 1e-8 over 1e4) and never at the default 1e-12 before T ~ 1e6.
+struct CasimirDrift {
+  static constexpr double kThreshold = 1e-6;
+  double geometric = 0.0;
+  double area = 0.0;
+  bool exceeded() const { return !(geometric <= kThreshold && area <= kThreshold); }
+};
+
+/// The Casimirs' relative drift of a run observed by `drift` (area relative to max |m|; 0 when m
+/// stayed 0).
+CasimirDrift casimir_drift(const IntegralsDrift& drift);
+
 }  // namespace newtop

@@ -58,14 +58,8 @@ inline Vec3 gamma_momentum(const State& x) { return x.m.cross(x.gamma); }
 /// For a surface γ_k = c (one γ coefficient, nothing else): k (0, 1, 2); −1 otherwise.
 int gamma_plane_axis(const Surface& s);
 
-/// Largest |I(x) − I(x0)| of each integral that holds (energy, area, geometric, Brun, Lagrange).
-struct IntegralsDrift {
-  IntegralValues initial, max_drift;
-  bool started = false;
-  void observe(const IntegralValues& v);
-  /// Takes the larger drift of each integral from another run (each against its own start).
-  void merge(const IntegralsDrift& other);
-};
+/// The drift of the integrals over a run: the model's one observer (model/integrals.hpp).
+using newtop::IntegralsDrift;
 
 struct SectionSettings {
   Direction direction = Direction::up;

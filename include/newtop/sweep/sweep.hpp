@@ -78,6 +78,15 @@ SweepFile load_sweep(const std::string& path);
 /// scenario's text, without building the points' scenarios (input_files stays empty).
 SweepFile read_sweep(const std::string& path);
 
+/// The sweep file's own part of read_sweep on its text (`path` names it in messages): base_source
+/// is the `scenario` key as written, base_text stays empty.
+SweepFile parse_sweep(const std::string& text, const std::string& path);
+
+/// A sweep without files: the sweep's text (as a sweep file's, its `scenario` key naming the base
+/// in messages only) over the base scenario's text, every point checked as load_sweep does.
+SweepFile make_sweep(const std::string& text, const std::string& base_source,
+                     const std::string& base_text);
+
 /// The number of points: the product of the axes' lengths (grid) or their common length (zip).
 std::size_t point_count(const SweepFile& s);
 

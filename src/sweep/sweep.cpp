@@ -1,6 +1,8 @@
 // Running a sweep: points over OpenMP threads (dynamic schedule), results by index, and a
 // checkpoint of the finished points that survives SIGKILL (docs/sweep.md).
 
+#include "newtop/sweep/sweep.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <charconv>
@@ -14,7 +16,6 @@
 #include <string_view>
 
 #include "newtop/integrate/ensemble.hpp"
-#include "newtop/sweep/sweep.hpp"
 #include "newtop/sweep/sweep_ensemble.hpp"
 
 #ifdef _OPENMP
