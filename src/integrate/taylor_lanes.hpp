@@ -1,5 +1,5 @@
 #pragma once
-// The lanes of Taylor's recurrences (taylor.cpp, taylor_tangent.cpp; private to the library):
+// The lanes of Taylor's recurrences (taylor.cpp, phase/taylor_tangent.cpp; private to the library):
 // 4-lane AVX2 vectors or pairs of 2-lane ones, the same lane-wise operations on both, and the
 // helpers the state's and the tangent's series share (the step from the coefficients' norms, the
 // sum of a series).

@@ -46,7 +46,9 @@ Vec3 roll_pitch_yaw(const Mat3& C) {
   // C = R1(φ)R2(θ)R3(ψ): C13 = −sin θ, (C11, C12) = cos θ (cos ψ, sin ψ),
   // (C33, C23) = cos θ (cos φ, sin φ). At cos θ = 0 only ψ ∓ φ is defined: φ = 0 and
   // (C22, −C21) = (cos ψ, sin ψ).
-  const double pitch = std::asin(std::clamp(-C(0, 2), -1.0, 1.0));
+  // θ from atan2(sin θ, cos θ), cos θ = |(C11, C12)| ≥ 0: as accurate near ±π/2 as elsewhere
+  // (asin(−C13) loses half the digits there).
+  const double pitch = std::atan2(-C(0, 2), std::hypot(C(0, 0), C(0, 1)));
   if (std::hypot(C(0, 0), C(0, 1)) < kGimbalLock) {
     return {0.0, pitch, std::atan2(-C(1, 0), C(1, 1))};
   }

@@ -184,21 +184,17 @@ void run_taylor_group(const SweepFile& s, const Group& g,
   TaylorEnsemble ensemble(k.method.abs_tol, k.method.rel_tol);
   std::vector<State> x;
   std::vector<QuadraticModel> models;
-  std::vector<IntegralValues> i0;
-  for (const Member& p : g.members) {
+  std::vector<IntegralsDrift> drift(g.members.size());
+  for (std::size_t j = 0; j < g.members.size(); ++j) {
+    const Member& p = g.members[j];
     x.push_back(p.initial);
     models.push_back(p.quadratic);
-    i0.push_back(integrals(p.model, p.initial));
+    drift[j].observe(integrals(p.model, p.initial));
   }
-  std::vector<Drift> drift(g.members.size());
   TaylorEnsembleObserver obs;
   if (wants(s, "drift")) {
     obs.step = [&](std::size_t j, double, const State& y) {
-      const IntegralValues v = integrals(g.members[j].model, y);
-      Drift& d = drift[j];
-      d.energy = std::max(d.energy, std::abs(v.energy - i0[j].energy));
-      d.area = std::max(d.area, std::abs(v.area - i0[j].area));
-      d.geometric = std::max(d.geometric, std::abs(v.geometric - i0[j].geometric));
+      drift[j].observe(integrals(g.members[j].model, y));
     };
   }
   const std::vector<Outcome> r = ensemble.integrate(models, x, k.t0, k.t1, options, obs);

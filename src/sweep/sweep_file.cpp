@@ -236,7 +236,6 @@ void read_axes(const toml::table& doc, SweepFile& s) {
   }
 }
 
-
 /// The base scenario's model (fixed point, circular or elliptic orbit) from its text, and the
 /// quantities and keys that apply to it (check_model).
 void set_base_model(SweepFile& s) {

@@ -14,6 +14,7 @@
 #include "newtop/orbit/debra_delp.hpp"
 #include "newtop/orbit/orbit_chaos.hpp"
 #include "newtop/orbit/orbit_integrate.hpp"
+#include "newtop/orbit/orbit_section.hpp"
 #include "newtop/orbit/spin_orbit.hpp"
 #include "sweep_points.hpp"
 
@@ -23,11 +24,11 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// One run of the point's scenario: the final state (at a time) and the largest drift of the
-/// Jacobi integral (circular orbit) and of the Casimirs γ·γ, n·n, γ·n.
+/// Jacobi integral (circular orbit) and of the Casimirs γ·γ, n·n, γ·n (the orbit's drift observer).
 struct OrbitRun {
   OrbitOutcome outcome;
   double t = 0.0;  ///< the time reached (on an ellipse, from the anomaly by Kepler's equation)
-  double jacobi = 0, gamma_gamma = 0, normal_normal = 0, gamma_normal = 0;
+  OrbitSectionDrift drift;
 };
 
 OrbitRun run_orbit(const SweepFile& s, const io::OrbitScenario& sc) {
@@ -35,28 +36,24 @@ OrbitRun run_orbit(const SweepFile& s, const io::OrbitScenario& sc) {
   const double t0 = sc.integrate.t0, t1 = io::resolve_t_end(sc, s.integrate);
   const std::int64_t max_steps = sc.integrate.max_steps.value_or(100'000'000);
   OrbitRun r;
-  const OrbitCasimirs c0 = casimirs(sc.initial);
-  auto casimir_drift = [&](const OrbitState& x) {
-    const OrbitCasimirs c = casimirs(x);
-    r.gamma_gamma = std::max(r.gamma_gamma, std::abs(c.gamma_gamma - c0.gamma_gamma));
-    r.normal_normal = std::max(r.normal_normal, std::abs(c.normal_normal - c0.normal_normal));
-    r.gamma_normal = std::max(r.gamma_normal, std::abs(c.gamma_normal - c0.gamma_normal));
-  };
   if (const auto* c = std::get_if<CircularOrbit>(&sc.orbit)) {
     const CircularOrbitModel model(sc.body, *c);
     const double h0 = jacobi_integral(model, sc.initial);
-    r.outcome = run_orbit_method(
-        method, model, sc.initial, t0, t1, max_steps, [&](double, const OrbitState& x) {
-          casimir_drift(x);
-          r.jacobi = std::max(r.jacobi, std::abs(jacobi_integral(model, x) - h0));
-        });
+    r.drift.observe(sc.initial, &h0);
+    r.outcome = run_orbit_method(method, model, sc.initial, t0, t1, max_steps,
+                                 [&](double, const OrbitState& x) {
+                                   const double h = jacobi_integral(model, x);
+                                   r.drift.observe(x, &h);
+                                 });
     r.t = r.outcome.t;
     return r;
   }
   const auto& e = std::get<EllipticOrbit>(sc.orbit);
   const double nu0 = e.true_anomaly0, nu1 = true_anomaly_at(e, t1 - t0);
-  r.outcome = run_orbit_method(method, EllipticOrbitModel(sc.body, e), sc.initial, nu0, nu1,
-                               max_steps, [&](double, const OrbitState& x) { casimir_drift(x); });
+  r.drift.observe(sc.initial, nullptr);
+  r.outcome =
+      run_orbit_method(method, EllipticOrbitModel(sc.body, e), sc.initial, nu0, nu1, max_steps,
+                       [&](double, const OrbitState& x) { r.drift.observe(x, nullptr); });
   r.t = r.outcome.t == nu1 ? t1 : t0 + elapsed_time(e, nu0, r.outcome.t);
   return r;
 }
@@ -106,6 +103,25 @@ void add_synchronous_odd(const io::OrbitScenario& sc, std::vector<double>& v) {
                         : odd.stability == FloquetStability::unstable ? 0.0
                                                                       : kNaN;
   v.insert(v.end(), {p.k, 1.0, odd.dtheta0, odd.monodromy.trace(), stable});
+}
+
+/// The tangent run of `newtop chaos` on an orbit (docs/orbit.md §13): an embedded pair with its
+/// tolerance (a splitting is refused by check_orbit_chaos_settings, naming `method`).
+OrbitChaosSettings orbit_chaos_settings(const SweepFile& s, const io::OrbitScenario& sc) {
+  OrbitChaosSettings c;
+  c.method = io::resolve_method(sc, s.integrate);
+  c.t0 = sc.integrate.t0;
+  c.t1 = io::resolve_t_end(sc, s.integrate);
+  c.max_steps = sc.integrate.max_steps.value_or(c.max_steps);
+  return c;
+}
+
+OrbitChaosResult run_orbit_chaos(const SweepFile& s, const io::OrbitScenario& sc) {
+  const OrbitChaosSettings c = orbit_chaos_settings(s, sc);
+  if (const auto* circ = std::get_if<CircularOrbit>(&sc.orbit)) {
+    return orbit_chaos(CircularOrbitModel(sc.body, *circ), sc.initial, c);
+  }
+  return orbit_chaos(EllipticOrbitModel(sc.body, std::get<EllipticOrbit>(sc.orbit)), sc.initial, c);
 }
 
 }  // namespace
@@ -218,8 +234,9 @@ PointResult evaluate_orbit_point(const SweepFile& s, std::size_t index) {
     } else if (q == "lyapunov_max") {
       r.values.push_back(chaos->indicators.lyapunov_max);
     } else if (q == "drift") {
-      if (s.model == BaseModel::circular_orbit) r.values.push_back(run->jacobi);
-      r.values.insert(r.values.end(), {run->gamma_gamma, run->normal_normal, run->gamma_normal});
+      const OrbitSectionDrift& d = run->drift;
+      if (s.model == BaseModel::circular_orbit) r.values.push_back(d.jacobi);
+      r.values.insert(r.values.end(), {d.gamma_gamma, d.normal_normal, d.gamma_normal});
     } else if (q == "final_state") {
       const OrbitState& x = run->outcome.state;
       const Vec3 w = omega(sc.body, x);

@@ -215,14 +215,13 @@ bool sweep_must_work(const std::string& model, const std::string& q) {
 }
 
 std::string sweep_file(const Model& m, const std::string& quantity, int n) {
-  const std::string text = "scenario = \"" + newtop::test::example_path(m.example) +
-                           "\"\nquantities = [\"" + quantity +
-                           "\"]\n[integrate]\nt_end = " + m.t_end + "\n" +
-                           // The chaos indicators of an orbit need an embedded pair (orbit.md §13).
-                           (std::string(m.name) != "fixed point" &&
-                                    (quantity == "megno" || quantity == "lyapunov_max")
-                                ? "method = \"rkf78\"\ntol = 1e-9\n"
-                                : "");
+  const std::string text =
+      "scenario = \"" + newtop::test::example_path(m.example) + "\"\nquantities = [\"" + quantity +
+      "\"]\n[integrate]\nt_end = " + m.t_end + "\n" +
+      // The chaos indicators of an orbit need an embedded pair (orbit.md §13).
+      (std::string(m.name) != "fixed point" && (quantity == "megno" || quantity == "lyapunov_max")
+           ? "method = \"rkf78\"\ntol = 1e-9\n"
+           : "");
   return newtop::test::write_text(
              newtop::test::scratch_path("newtop_options", "sweep" + std::to_string(n) + ".toml"),
              text)

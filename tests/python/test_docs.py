@@ -18,7 +18,8 @@ def section_code(title):
     return re.findall(r"```python\n(.*?)```", body, re.S)
 
 
-def test_the_analyses_section_runs():
+def test_the_analyses_section_runs(monkeypatch):
+    monkeypatch.chdir(ROOT)  # the snippets name examples/... as from the repository's root
     blocks = section_code("The analyses")
     assert blocks
     for code in blocks:

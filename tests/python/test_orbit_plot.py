@@ -146,7 +146,7 @@ def test_sweep_over_orbit_keys(tmp_path):
     """A sweep whose keys are orbit keys: the swept columns are told from the quantities by the
     key's dot (section.key), whatever the quantities are called."""
     sweep = tmp_path / "orbit_sweep.toml"
-    sweep.write_text('scenario = "%s"\nquantities = ["stability"]\n[[axes]]\nkey = '
+    sweep.write_text('scenario = "%s"\nquantities = ["debra_delp"]\n[[axes]]\nkey = '
                      '"body.inertia[0]"\nstart = 50.0\nstop = 70.0\ncount = 3\n[[axes]]\nkey = '
                      '"orbit.radius"\nstart = 6.8e6\nstop = 7.2e6\ncount = 3\n'
                      % example("orbit_leo_lagrange_rest"))

@@ -11,7 +11,7 @@
 #include <algorithm>
 
 #include "newtop/phase/tangent_taylor.hpp"
-#include "taylor_lanes.hpp"
+#include "../integrate/taylor_lanes.hpp"
 
 namespace newtop {
 namespace detail {
