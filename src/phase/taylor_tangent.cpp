@@ -10,8 +10,8 @@
 
 #include <algorithm>
 
-#include "newtop/phase/tangent_taylor.hpp"
 #include "../integrate/taylor_lanes.hpp"
+#include "newtop/phase/tangent_taylor.hpp"
 
 namespace newtop {
 namespace detail {
