@@ -27,8 +27,7 @@ BasicModel<ExactField> exact_model() {
   const auto points = std::make_shared<const MassModel>(PointMasses(
       {1.0, 0.7, 0.5, 0.9},
       {Vec3(0.3, 0.1, -0.2), Vec3(-0.4, 0.2, 0.1), Vec3(0.1, -0.5, 0.3), Vec3(0.0, 0.2, -0.4)}));
-  return std::get<BasicModel<ExactField>>(
-      Model::exact(points, 2.0, 3.0 * max_radius(*points)).variant());
+  return newtop::exact_model(Model::exact(points, 2.0, 3.0 * max_radius(*points)));
 }
 
 template <class M>

@@ -12,6 +12,7 @@
 #include <variant>
 
 #include "assets.hpp"
+#include "newtop/exact/mass_models.hpp"
 #include "newtop/io/json.hpp"
 
 namespace newtop::viewer {

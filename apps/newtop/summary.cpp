@@ -5,6 +5,7 @@
 #include <iomanip>
 
 #include "integration_options.hpp"
+#include "newtop/exact/mass_models.hpp"
 #include "newtop/integrate/taylor.hpp"
 
 namespace newtop::app {

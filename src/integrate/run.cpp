@@ -1,5 +1,6 @@
 #include "newtop/integrate/run.hpp"
 
+#include "newtop/exact/model_fields.hpp"
 #include "newtop/integrate/methods.hpp"
 #include "newtop/model/state_checks.hpp"
 

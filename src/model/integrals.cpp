@@ -57,14 +57,6 @@ IntegralValues integrals(const QuadraticModel& model, const State& s) {
   return v;
 }
 
-double energy(const Model& model, const State& s) {
-  return visit_model(model, [&](const auto& m) { return energy(m, s); });
-}
-
-IntegralValues integrals(const Model& model, const State& s) {
-  return visit_model(model, [&](const auto& m) { return integrals(m, s); });
-}
-
 std::vector<std::string> conserved_integrals(const Model& model) {
   if (model.kind() == FieldKind::quadratic) return conserved_integrals(model.quadratic());
   return {"energy", "area", "geometric"};

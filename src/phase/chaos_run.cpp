@@ -2,6 +2,7 @@
 
 #include "newtop/phase/chaos_run.hpp"
 
+#include "newtop/exact/model_fields.hpp"
 #include "newtop/model/state_checks.hpp"
 
 namespace newtop::phase {

@@ -2,6 +2,7 @@
 
 #include "newtop/phase/section_run.hpp"
 
+#include "newtop/exact/model_fields.hpp"
 #include "newtop/integrate/method_settings.hpp"
 #include "newtop/model/state_checks.hpp"
 

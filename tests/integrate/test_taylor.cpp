@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "newtop/exact/mass_models.hpp"
 #include "support/adaptive_checks.hpp"
 #include "support/cli.hpp"
 #include "support/problems.hpp"

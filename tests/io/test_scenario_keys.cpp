@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "newtop/exact/mass_models.hpp"
 #include "newtop/io/scenario.hpp"
 #include "reject.hpp"
 

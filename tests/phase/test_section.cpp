@@ -8,6 +8,7 @@
 #include <memory>
 #include <numbers>
 
+#include "newtop/exact/model_fields.hpp"
 #include "newtop/model/model.hpp"
 #include "newtop/phase/section_run.hpp"
 #include "support/problems.hpp"

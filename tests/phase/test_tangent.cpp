@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "newtop/exact/model_fields.hpp"
 #include "newtop/model/model.hpp"
 #include "newtop/phase/chaos_run.hpp"
 #include "newtop/phase/one_step.hpp"
@@ -131,8 +132,8 @@ void check_steps(const BasicModel<F>& model, const char* name) {
 TEST(TangentMap, SubFlowsMatchFiniteDifferences) {
   const Models ms;
   check_sub_flows(ms.quadratic, "quadratic");
-  check_sub_flows(std::get<BasicModel<ExactField>>(ms.exact.variant()), "exact");
-  check_sub_flows(std::get<BasicModel<MultipoleField>>(ms.multipole.variant()), "multipole");
+  check_sub_flows(exact_model(ms.exact), "exact");
+  check_sub_flows(multipole_model(ms.multipole), "multipole");
 }
 
 TEST(TangentMap, WholeStepsMatchFiniteDifferences) {
@@ -141,8 +142,8 @@ TEST(TangentMap, WholeStepsMatchFiniteDifferences) {
   // The spin split above has a gyrostat on C, the axis of largest moment (SpinFlow<true>); here
   // none.
   check_steps(test::generic_model(Vec3(0.1, -0.2, 0.0)), "quadratic, no gyrostat on C");
-  check_steps(std::get<BasicModel<ExactField>>(ms.exact.variant()), "exact");
-  check_steps(std::get<BasicModel<MultipoleField>>(ms.multipole.variant()), "multipole");
+  check_steps(exact_model(ms.exact), "exact");
+  check_steps(multipole_model(ms.multipole), "multipole");
 }
 
 // The tangent stepper iterates the same map as the plain stepper: the states agree to the

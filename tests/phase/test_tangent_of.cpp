@@ -7,6 +7,7 @@
 #include <memory>
 #include <type_traits>
 
+#include "newtop/exact/model_fields.hpp"
 #include "newtop/model/model.hpp"
 #include "newtop/phase/chaos_run.hpp"
 #include "support/problems.hpp"

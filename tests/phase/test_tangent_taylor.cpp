@@ -7,6 +7,7 @@
 
 #include <memory>
 
+#include "newtop/exact/model_fields.hpp"
 #include "newtop/phase/chaos_run.hpp"
 #include "newtop/phase/tangent_taylor.hpp"
 #include "support/problems.hpp"
@@ -125,7 +126,7 @@ TEST(TangentTaylor, AgreesWithDop853sVariationalEquations) {
 TEST(TangentTaylor, OtherFieldsAreRefused) {
   const auto masses = std::make_shared<const MassModel>(PointMasses(
       {1.0, 0.7, 0.5}, {Vec3(0.3, 0.1, -0.2), Vec3(-0.4, 0.2, 0.1), Vec3(0.1, -0.5, 0.3)}));
-  const auto exact = std::get<BasicModel<ExactField>>(Model::exact(masses, 1.0, 5.0).variant());
+  const BasicModel<ExactField> exact = exact_model(Model::exact(masses, 1.0, 5.0));
   const State x0 = state_from_omega(exact.body, Vec3(0.1, 0.2, 0.3), Vec3(0.0, 0.6, 0.8));
   phase::TangentTaylorStepper s(1e-10, 1e-10);
   State x = x0;

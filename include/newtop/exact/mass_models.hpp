@@ -58,8 +58,13 @@ struct Ellipsoid {
 /// a closed polyhedron of 12 outward triangles.
 Polyhedron make_box(const Vec3& dimensions, double density, const Vec3& center = Vec3::Zero());
 
-/// Any of the mass models.
-using MassModel = std::variant<PointMasses, Polyhedron, Ellipsoid>;
+/// Any of the mass models: a std::variant (std::visit, std::get, std::holds_alternative and index()
+/// work on it as on the variant), made a class of its own so that the model can hold one while it
+/// only declares it (newtop/model/model.hpp: the model does not know mass models).
+class MassModel : public std::variant<PointMasses, Polyhedron, Ellipsoid> {
+ public:
+  using std::variant<PointMasses, Polyhedron, Ellipsoid>::variant;
+};
 
 MassProperties mass_properties(const PointMasses& p);
 /// Exact, by signed tetrahedra from O.

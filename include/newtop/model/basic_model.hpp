@@ -20,9 +20,12 @@ concept Field = requires(const Body& b, const F& f, const Vec3& g) {
 };
 
 /// Body plus one concrete field: pure data, immutable by convention. A view: the body of an
-/// exact or multipole field must be the mass model's (Model's factories see to it).
-template <Field F>
+/// exact or multipole field must be the mass model's (Model's factories see to it). F is checked
+/// to be a Field where a BasicModel<F> is made (the class is instantiated), not where it is named:
+/// Model names BasicModel<ExactField> of a field it only declares (newtop/model/model.hpp).
+template <class F>
 struct BasicModel {
+  static_assert(Field<F>, "BasicModel<F>: F needs potential(body, F, gamma) and grad_gamma");
   Body body;
   F field;
 };

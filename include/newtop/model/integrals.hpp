@@ -64,7 +64,8 @@ IntegralValues integrals(const BasicModel<F>& model, const State& s) {
   return {energy(model, s), area(s), geometric(s), std::nullopt, std::nullopt};
 }
 
-/// The energy of the model's own field: ½ ω·Iω + V(γ) with that field's V.
+/// The energy of the model's own field: ½ ω·Iω + V(γ) with that field's V. Defined, with
+/// integrals(Model, s), beside the fields (src/exact/model_fields.cpp).
 double energy(const Model& model, const State& s);
 
 /// The integrals of the model's own field: energy, area and geometric for every field; Brun's and

@@ -3,17 +3,29 @@
 /// Model: the body and the field of a run, whatever the field (docs/model.md §2–§4). The field is a
 /// value that is any of the quadratic field of docs/model.md §3, the exact field of a mass model
 /// (docs/model.md §2) or its multipole expansion; the body of an exact or multipole field is always
-/// the mass model's own (one source of mass properties). The steppers and kernels run on the
-/// concrete BasicModel<F> that visit_model() hands them, so their loops stay monomorphic.
+/// the mass model's (one source of mass properties). The steppers and kernels run on the concrete
+/// BasicModel<F> that visit_model() hands them, so their loops stay monomorphic.
+///
+/// The model does not know mass models: the exact field, its multipole expansion and the mass
+/// model are plugged in from newtop/exact, and only declared here. A model of such a field is held
+/// by a shared pointer to an immutable BasicModel<F> (copies of a Model share it); what must see
+/// the field — the factories from a mass model, body(), centre_parameters and the functions of a
+/// Model below — is defined beside the fields (src/exact/model_fields.cpp). visit_model is
+/// instantiated where the fields are complete: include newtop/exact/model_fields.hpp (or the
+/// umbrella newtop/newtop.hpp) to call it.
 
 #include <memory>
-#include <string>
+#include <type_traits>
+#include <utility>
 #include <variant>
 
-#include "newtop/exact/multipole.hpp"
 #include "newtop/model/basic_model.hpp"
 
 namespace newtop {
+
+struct ExactField;      // newtop/exact/exact_field.hpp
+struct MultipoleField;  // newtop/exact/multipole.hpp
+class MassModel;        // newtop/exact/mass_models.hpp
 
 /// Which field a model has.
 enum class FieldKind { quadratic, exact, multipole };
@@ -23,7 +35,14 @@ const char* to_string(FieldKind k);
 
 class Model {
  public:
-  using Variant = std::variant<QuadraticModel, BasicModel<ExactField>, BasicModel<MultipoleField>>;
+  /// A model of a field plugged in from newtop/exact: immutable, shared by the copies of a Model.
+  /// A struct of its own, so that BasicModel<F> is no template argument of the Variant (argument-
+  /// dependent lookup would instantiate it, and nothing here may need the field's definition).
+  template <class F>
+  struct Shared {
+    std::shared_ptr<const BasicModel<F>> model;
+  };
+  using Variant = std::variant<QuadraticModel, Shared<ExactField>, Shared<MultipoleField>>;
 
   /// The quadratic field of docs/model.md §3 on a body given by its mass properties.
   Model(const Body& body, const QuadraticField& field) : v_(QuadraticModel{body, field}) {}
@@ -41,10 +60,11 @@ class Model {
   static Model multipole(std::shared_ptr<const MassModel> mass_model, int order, double mu,
                          double R, const Vec3& gyrostat = Vec3::Zero());
 
-  const Body& body() const {
-    return std::visit([](const auto& m) -> const Body& { return m.body; }, v_);
-  }
+  /// The body: the mass model's for an exact or multipole field.
+  const Body& body() const;
   FieldKind kind() const { return static_cast<FieldKind>(v_.index()); }
+  /// The field as held: the quadratic model itself, a shared pointer to the others (visit_model
+  /// and the accessors of newtop/exact/model_fields.hpp hand out the model itself).
   const Variant& variant() const { return v_; }
   /// The mass model the body derives from; null for a body given by its mass properties.
   const std::shared_ptr<const MassModel>& mass_model() const { return mass_model_; }
@@ -62,10 +82,20 @@ static_assert(static_cast<int>(FieldKind::exact) == 1 &&
                   static_cast<int>(FieldKind::multipole) == 2,
               "FieldKind follows the order of Model::Variant");
 
-/// The one dispatch of a run: f(const BasicModel<F>&) for the model's field.
+/// The one dispatch of a run: f(const BasicModel<F>&) for the model's field, the concrete model
+/// itself (never the pointer that holds it), so that what f runs stays monomorphic. Call it where
+/// the fields are complete (newtop/exact/model_fields.hpp).
 template <class Fn>
 decltype(auto) visit_model(const Model& model, Fn&& f) {
-  return std::visit(std::forward<Fn>(f), model.variant());
+  return std::visit(
+      [&f](const auto& held) -> decltype(auto) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(held)>, QuadraticModel>) {
+          return std::forward<Fn>(f)(held);
+        } else {
+          return std::forward<Fn>(f)(*held.model);
+        }
+      },
+      model.variant());
 }
 
 /// μ and R of an exact or multipole field (μ = 0, R = 0 for the quadratic field).
@@ -79,6 +109,7 @@ CentreParameters centre_parameters(const Model& model);
 /// field; the model itself for the quadratic field): what a command compares with, labelled so.
 QuadraticModel quadratic_approximation(const Model& model);
 
+/// V, ∂V/∂γ, ∂²V/∂γ², the moment L, ∂L/∂γ and the right-hand side of the model's own field.
 double potential(const Model& model, const Vec3& gamma);
 Vec3 grad_gamma(const Model& model, const Vec3& gamma);
 Mat3 hessian_gamma(const Model& model, const Vec3& gamma);
