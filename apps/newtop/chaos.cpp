@@ -28,7 +28,8 @@ struct ChaosArgs {
   bool json = false;
 };
 
-/// The history keeps at most this many rows (every step of a shorter run).
+/// The history keeps at most this many rows of a fixed-step run (every step of a shorter run; an
+/// adaptive run's every accepted step).
 constexpr std::int64_t kHistoryRows = 10000;
 
 void write_row(std::ostream& os, const phase::ChaosSample& s) {
@@ -48,7 +49,6 @@ int run(const ChaosArgs& a) {
   }
   const io::Scenario sc = load_body_scenario(a.scenario);
   const RunSettings run = resolve_run(sc, a.integration);
-  phase::check_tangent_method(run.method);
   std::unique_ptr<io::AtomicFile> file;
   if (a.out) {
     file = std::make_unique<io::AtomicFile>(*a.out, sc.input_files);
@@ -56,19 +56,21 @@ int run(const ChaosArgs& a) {
     if (a.spectrum) file->stream() << ",lambda1,lambda2,lambda3,lambda4,lambda5,lambda6";
     file->stream() << '\n';
   }
-  // Fixed-step methods: at most kHistoryRows rows; adaptive ones: every accepted step.
-  const bool adaptive = method_info(run.method.name).kind == MethodKind::adaptive;
-  const std::optional<std::string> split = split_of(run.method);
-  const std::int64_t steps = adaptive ? 1 : fixed_step_count(run.t0, run.t_end, run.method.step);
-  const std::int64_t every = std::max<std::int64_t>(1, (steps + kHistoryRows - 1) / kHistoryRows);
-  std::function<void(const phase::ChaosSample&)> history;
-  if (file) history = [&](const phase::ChaosSample& s) { write_row(file->stream(), s); };
+  phase::ChaosRequest request{.method = run.method,
+                              .t0 = run.t0,
+                              .t_end = run.t_end,
+                              .spectrum = a.spectrum,
+                              .options = run.options};
+  if (file) {
+    request.history = [&](const phase::ChaosSample& s) { write_row(file->stream(), s); };
+    request.history_rows = kHistoryRows;
+  }
+  request.on_step = throw_if_interrupted;
 
   const InterruptGuard guard;
   phase::ChaosResult r;
   try {
-    r = phase::chaos_run(run.method, sc.model, sc.initial, run.t0, run.t_end, run.options,
-                         a.spectrum, history, every, throw_if_interrupted);
+    r = phase::chaos(sc.model, sc.initial, request);
   } catch (const Interrupted& e) {
     std::cerr << "newtop: interrupted by " << signal_name(e.signal)
               << " at t = " << format_number(e.t)
@@ -77,6 +79,8 @@ int run(const ChaosArgs& a) {
   }
   if (file) file->commit();
   const phase::ChaosSample& c = r.indicators;
+  const bool adaptive = method_info(run.method.name).kind == MethodKind::adaptive;
+  const std::optional<std::string> split = split_of(run.method);
   if (a.json) {
     io::Json j;
     j["lyapunov_max"] = c.lyapunov_max;
