@@ -195,6 +195,9 @@ double taylor_step(const TaylorSeries& s, double abs_tol, double rel_tol) {
       s.order, [&](int n) { return coefficient_norm(s, n); }, abs_tol, rel_tol);
 }
 
+double taylor_step_log2(double x) { return taylor_math::step_log2(x); }
+double taylor_step_exp2(double y) { return taylor_math::step_exp2(y); }
+
 int taylor_order(double tol) {
   const double digits = std::abs(std::log(tol));
   if (!std::isfinite(digits)) return 30;

@@ -26,9 +26,15 @@ void norms(const double* series, const double* tangent, int order, double* out) 
   taylor_ensemble_simd::norms<V, kLanes>(series, tangent, order, out);
 }
 
+void steps(const double* norms, int order, double abs_tol, double rel_tol, double* out) {
+  taylor_ensemble_simd::steps<V, kLanes>(norms, order, abs_tol, rel_tol, out);
+}
+
 }  // namespace
 
-TaylorLaneKernel taylor_lane_kernel_avx2() { return {kLanes, expand, sum, expand_tangent, norms}; }
+TaylorLaneKernel taylor_lane_kernel_avx2() {
+  return {kLanes, expand, sum, expand_tangent, norms, steps};
+}
 
 }  // namespace newtop::detail
 #endif

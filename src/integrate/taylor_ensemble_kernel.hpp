@@ -15,6 +15,8 @@
 #include <cstddef>
 #include <cstring>
 
+#include "taylor_math.hpp"
+
 namespace newtop::detail {
 
 inline constexpr int kTaylorLaneConstants = 15;  // inv_i, k, b, d_spin, d_field
@@ -30,6 +32,9 @@ struct TaylorLaneKernel {
   /// The max norms (taylor_lanes::pair_norm) of the coefficients 0, order − 1 and order of each
   /// lane's series, at norms[k L + l]; with `tangent`, nan_max of the state's and the tangent's.
   void (*norms)(const double* series, const double* tangent, int order, double* norms);
+  /// taylor_math::regular_step of each lane from its norms (as `norms` writes them), at steps[l]:
+  /// the lane's step where its norms p − 1 and p are finite and nonzero.
+  void (*steps)(const double* norms, int order, double abs_tol, double rel_tol, double* steps);
 };
 
 TaylorLaneKernel taylor_lane_kernel_portable();
@@ -252,6 +257,12 @@ void norms(const double* series, const double* tangent, int order, double* out) 
     if (tangent != nullptr) r = nan_max(r, pair_norm<V, L>(tangent, at[k]));
     store(out + k * L, r);
   }
+}
+
+template <class V, int L>
+void steps(const double* norms, int order, double abs_tol, double rel_tol, double* out) {
+  store(out, taylor_math::regular_step(load<V>(norms), load<V>(norms + L), load<V>(norms + 2 * L),
+                                       abs_tol, rel_tol, order));
 }
 
 // The series summed at h, a step per lane (taylor_lanes::sum_series: Horner in h² over the even

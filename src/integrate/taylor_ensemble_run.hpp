@@ -73,7 +73,8 @@ class BatchRun {
         tangent_(tangent),
         lanes_(L_) {
     const std::size_t coefficients = 6 * L_ * (detail::TaylorSeries::kMaxOrder + 1);
-    workspace.assign((detail::kTaylorLaneConstants + 6 * 4 + 1 + 6) * L_ + 2 * coefficients, 0.0);
+    workspace.assign((detail::kTaylorLaneConstants + 6 * 4 + 1 + 6 + 2) * L_ + 2 * coefficients,
+                     0.0);
     consts_ = workspace.data();
     x_ = consts_ + detail::kTaylorLaneConstants * L_;
     trial_ = x_ + 6 * L_;
@@ -84,6 +85,8 @@ class BatchRun {
     tangent_series_ = series_ + coefficients;
     norms_ = tangent_series_ + coefficients;
     tangent_norms_ = norms_ + 3 * L_;
+    steps_ = tangent_norms_ + 3 * L_;
+    tangent_steps_ = steps_ + L_;
     outcomes_.resize(states.size());
   }
 
@@ -95,9 +98,11 @@ class BatchRun {
     while (std::any_of(lanes_.begin(), lanes_.end(), [](const LaneRun& r) { return r.active; })) {
       kernel_.expand(consts_, x_, e_.order(), series_);
       kernel_.norms(series_, nullptr, e_.order(), norms_);
+      kernel_.steps(norms_, e_.order(), e_.abs_tol(), e_.rel_tol(), steps_);
       if (tangent_) {
         kernel_.expand_tangent(consts_, series_, v_, e_.order(), tangent_series_);
         kernel_.norms(series_, tangent_series_, e_.order(), tangent_norms_);
+        kernel_.steps(tangent_norms_, e_.order(), e_.abs_tol(), e_.rel_tol(), tangent_steps_);
       }
       bool any = false;
       for (std::size_t l = 0; l < L_; ++l) {
@@ -133,11 +138,17 @@ class BatchRun {
 
   // taylor_step of the lane's series; with `with_tangent`, taylor_tangent_step of the state's and
   // the vector's series together.
-  // The norms of orders 0, p − 1 and p come from the kernel (norms_, tangent_norms_), the others
+  // Where the norms p − 1 and p are finite and nonzero, the kernel's step (steps_,
+  // tangent_steps_: regular_step, as step_from_norms takes it there); elsewhere step_from_norms
+  // with the norms of orders 0, p − 1 and p from the kernel (norms_, tangent_norms_), the others
   // (needed only where both of the last two coefficients vanish) from lane_norm.
   double lane_step(std::size_t l, bool with_tangent = false) const {
     const int p = e_.order();
     const double* pre = with_tangent ? tangent_norms_ : norms_;
+    if (detail::taylor_lanes::regular_norm(pre[L_ + l]) &&
+        detail::taylor_lanes::regular_norm(pre[2 * L_ + l])) {
+      return (with_tangent ? tangent_steps_ : steps_)[l];
+    }
     auto norm = [&](int n) {
       if (n == 0 || n >= p - 1) return pre[(n == 0 ? 0 : n == p ? 2 : 1) * L_ + l];
       const double r = lane_norm(n, l, series_);
@@ -317,7 +328,7 @@ class BatchRun {
   std::size_t next_ = 0;
   double *consts_ = nullptr, *x_ = nullptr, *trial_ = nullptr, *h_ = nullptr, *series_ = nullptr;
   double *v_ = nullptr, *v_trial_ = nullptr, *tangent_series_ = nullptr;
-  double *norms_ = nullptr, *tangent_norms_ = nullptr;
+  double *norms_ = nullptr, *tangent_norms_ = nullptr, *steps_ = nullptr, *tangent_steps_ = nullptr;
 };
 
 }  // namespace newtop::detail::taylor_ensemble_run
