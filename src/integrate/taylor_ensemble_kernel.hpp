@@ -27,6 +27,9 @@ struct TaylorLaneKernel {
   int lanes;
   void (*expand)(const double* consts, const double* x, int order, double* series);
   void (*sum)(const double* series, int order, const double* h, double* out);
+  /// The series summed at h[l] (as `sum`) in each lane l whose bit is set in `lanes`, written over
+  /// the state x where all six components are finite; returns the bits of the lanes written.
+  unsigned (*advance)(const double* series, int order, const double* h, unsigned lanes, double* x);
   void (*expand_tangent)(const double* consts, const double* series, const double* v, int order,
                          double* tangent);
   /// The max norms (taylor_lanes::pair_norm) of the coefficients 0, order − 1 and order of each
@@ -268,8 +271,8 @@ void steps(const double* norms, int order, double abs_tol, double rel_tol, doubl
 // The series summed at h, a step per lane (taylor_lanes::sum_series: Horner in h² over the even
 // and the odd coefficients).
 template <class V, int L>
-void sum(const double* series, int order, const double* h_lanes, double* out) {
-  const V h = load<V>(h_lanes);
+[[gnu::always_inline]] inline void sum_lanes(const double* series, int order, const V& h,
+                                             V (&out)[6]) {
   const V h2 = h * h;
   auto horner = [&](int top, V(&x)[6]) {
     for (int c = 0; c < 6; ++c) x[c] = load<V>(series + (6 * top + c) * L);
@@ -281,7 +284,30 @@ void sum(const double* series, int order, const double* h_lanes, double* out) {
   V even[6], other[6];
   horner(order - odd, even);
   horner(order - 1 + odd, other);
-  for (int c = 0; c < 6; ++c) store(out + c * L, even[c] + other[c] * h);
+  for (int c = 0; c < 6; ++c) out[c] = even[c] + other[c] * h;
+}
+
+template <class V, int L>
+void sum(const double* series, int order, const double* h_lanes, double* out) {
+  V x[6];
+  sum_lanes<V, L>(series, order, load<V>(h_lanes), x);
+  for (int c = 0; c < 6; ++c) store(out + c * L, x[c]);
+}
+
+template <class V, int L>
+unsigned advance(const double* series, int order, const double* h_lanes, unsigned lanes,
+                 double* x) {
+  using M = decltype(V{} == V{});  // a lane mask
+  V trial[6];
+  sum_lanes<V, L>(series, order, load<V>(h_lanes), trial);
+  M index{};
+  for (int l = 0; l < L; ++l) index[l] = l;
+  M write = ((M{} + static_cast<long>(lanes)) >> index & 1) != 0;
+  for (int c = 0; c < 6; ++c) write &= (trial[c] - trial[c]) == 0.0;  // finite (is_finite)
+  for (int c = 0; c < 6; ++c) store(x + c * L, write ? trial[c] : load<V>(x + c * L));
+  unsigned written = 0;
+  for (int l = 0; l < L; ++l) written |= write[l] != 0 ? 1u << l : 0u;
+  return written;
 }
 
 }  // namespace taylor_ensemble_simd

@@ -53,8 +53,10 @@ using TaylorTangentObserver =
 /// Holds a workspace: one ensemble per thread.
 class TaylorEnsemble {
  public:
-  /// Throws InputError as TaylorStepper does for the tolerances, and if the path is not available.
-  TaylorEnsemble(double abs_tol, double rel_tol, SimdPath path = best_simd_path());
+  /// Throws InputError as TaylorStepper does for the tolerances and the order, and if the path is
+  /// not available. `order`: as TaylorStepper's (0: taylor_order of the smaller tolerance); the
+  /// guarantee holds against TaylorStepper(abs_tol, rel_tol, order).
+  TaylorEnsemble(double abs_tol, double rel_tol, SimdPath path = best_simd_path(), int order = 0);
 
   int order() const { return order_; }
   SimdPath path() const { return path_; }
