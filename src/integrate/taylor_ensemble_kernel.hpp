@@ -146,9 +146,9 @@ void expand(const double* consts, const double* x, int order, double* series) {
       const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
       const V linear =
           (k[c1] * w[n][c2] - k[c2] * w[n][c1]) + (g[n][c1] * b[c2] - g[n][c2] * b[c1]);
-      store(next + c * L, (d_spin[c] * a.p[c] + d_field[c] * a.rs[c] + linear) * inv);
-      const V to_w = inv_i[c] * inv;
-      w[n + 1][c] = (d_spin[c] * to_w) * a.p[c] + (d_field[c] * to_w) * a.rs[c] + linear * to_w;
+      const V m_next = (d_spin[c] * a.p[c] + d_field[c] * a.rs[c] + linear) * inv;
+      store(next + c * L, m_next);
+      w[n + 1][c] = m_next * inv_i[c];
     }
     for (int c = 0; c < 3; ++c) {
       g[n + 1][c] = (a.s[c] - a.t[c]) * inv;
