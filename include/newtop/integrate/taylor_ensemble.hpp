@@ -11,8 +11,9 @@
 /// the adaptive driver (driver.hpp, sampled.hpp) running TaylorStepper(abs_tol, rel_tol) on that
 /// trajectory alone, whatever its lane, the batch size or the instruction set. Each lane performs
 /// the scalar recurrences' operations (taylor.cpp) in the same order on its own numbers, without
-/// fused multiply-adds, and each lane's step, acceptance and end are the driver's, decided by the
-/// same scalar code (tests/integrate/test_taylor_ensemble.cpp checks it).
+/// fused multiply-adds, and the step rule's (newtop's own log2 and exp2, taylor_step_log2 and
+/// taylor_step_exp2); each lane's step, acceptance and end are the driver's, decided by the same
+/// scalar code (tests/integrate/test_taylor_ensemble.cpp checks it).
 
 #include <cstddef>
 #include <cstdint>
