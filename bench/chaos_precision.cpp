@@ -1,8 +1,8 @@
 // Work–precision of the chaos indicators (docs/chaos.md): for each adaptive method with a tangent
-// map and each tolerance, the CPU time of `chaos_run` (one tangent vector, or six with --spectrum)
-// and its errors against the same run of dop853 at tolerance 1e-15: the final state |Δm| + |Δγ|,
-// λ_max and MEGNO. The regimes of bench/work_precision ((a) generic, T = 40; (b) fast spin,
-// λ/Ω² = 1e-3, T = 1e4; (c) slow libration, T = 1e4).
+// map and each tolerance, the CPU time of `phase::chaos` (one tangent vector, or six with
+// --spectrum) and its errors against the same run of dop853 at tolerance 1e-15: the final state
+// |Δm| + |Δγ|, λ_max and MEGNO. The regimes of bench/work_precision ((a) generic, T = 40; (b) fast
+// spin, λ/Ω² = 1e-3, T = 1e4; (c) slow libration, T = 1e4).
 //
 // Run: build/bench/chaos_precision [rounds] [--spectrum]   (rounds: the best of, default 3)
 //
@@ -40,7 +40,8 @@ Run run(const char* method, double tol, const Case& c, bool spectrum, int rounds
   Run best{1e300, {}};
   for (int k = 0; k < rounds; ++k) {
     const double t0 = cpu_seconds();
-    phase::ChaosResult r = phase::chaos_run(s, c.model, c.x0, 0.0, c.T, {}, spectrum);
+    phase::ChaosResult r =
+        phase::chaos(c.model, c.x0, {.method = s, .t_end = c.T, .spectrum = spectrum});
     const double t = cpu_seconds() - t0;
     if (t < best.cpu) best = {t, std::move(r)};
   }

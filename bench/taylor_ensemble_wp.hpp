@@ -78,14 +78,14 @@ inline WpPoint ensemble_taylor(const Regime& r, const LState& ref, double tol, s
   return {tol, state_error(out[0].state, ref), cpu / static_cast<double>(n)};
 }
 
-/// The same with one tangent vector and the chaos indicators (newtop chaos's run, chaos_run with
+/// The same with one tangent vector and the chaos indicators (newtop chaos's run, phase::chaos with
 /// method taylor): the final state's error and the CPU time.
 inline WpPoint scalar_taylor_tangent(const Regime& r, const LState& ref, double tol, int rounds,
                                      State& final_state) {
   phase::ChaosResult out;
   const double cpu = best_cpu(rounds, [&] {
-    out = phase::chaos_run(MethodSettings("taylor", 0.0, tol, tol), Model(r.model), r.x0, 0.0, r.T,
-                           IntegrateOptions{}, false);
+    out = phase::chaos(Model(r.model), r.x0,
+                       {.method = MethodSettings("taylor", 0.0, tol, tol), .t_end = r.T});
   });
   final_state = out.outcome.state;
   return {tol, state_error(out.outcome.state, ref), cpu};

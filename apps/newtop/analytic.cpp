@@ -1,26 +1,19 @@
 // newtop analytic SCENARIO.toml: detect the integrable case, evaluate its closed-form or quadrature
 // solution and compare it with a high-accuracy numerical integration (rkf78).
 
-// GCC 12 reports a false -Wuninitialized inside Boost.Odeint's Fehlberg 7(8) copy constructor.
-#pragma GCC diagnostic ignored "-Wuninitialized"
-
 #include "newtop/analysis/analytic.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
-#include <limits>
 #include <memory>
-#include <numbers>
 #include <optional>
-#include <type_traits>
 #include <variant>
 
-#include "analytic_brun.hpp"
 #include "command.hpp"
 #include "newtop/analysis/analytic_comparison.hpp"
-#include "newtop/analysis/lagrange_attitude.hpp"
 #include "newtop/integrate/run.hpp"
+#include "newtop/io/analytic_json.hpp"
 #include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
@@ -73,73 +66,6 @@ std::vector<double> sample_times(const AnalyticArgs& a, const io::Scenario& sc,
   return t;
 }
 
-io::Json state_json(const Body& b, const State& s) {
-  return {{"omega", io::to_json(omega(b, s))}, {"gamma", io::to_json(s.gamma)}};
-}
-
-io::Json nullable(double x) { return std::isfinite(x) ? io::Json(x) : io::Json(nullptr); }
-
-/// The Lagrange top's Euler angles (φ, θ, ψ) and its symmetry axis e3 in the fixed frame N (z along
-/// e: R e3 = q e3) at the times; null where γ3 = ±1 leaves φ and ψ undefined.
-io::Json euler_angles_json(const LagrangeCase& l, const std::vector<double>& times) {
-  io::Json euler = io::Json::array();
-  for (double t : times) {
-    const Vec3 angles = lagrange_euler_angles(l, t);
-    const Vec3 axis = from_euler_313(angles) * Vec3::UnitZ();
-    const bool finite = angles.allFinite() && axis.allFinite();
-    euler.push_back({{"t", t},
-                     {"phi", finite ? io::Json(angles[0]) : io::Json(nullptr)},
-                     {"theta", finite ? io::Json(angles[1]) : io::Json(nullptr)},
-                     {"psi", finite ? io::Json(angles[2]) : io::Json(nullptr)},
-                     {"axis", finite ? io::to_json(axis) : io::Json(nullptr)}});
-  }
-  return euler;
-}
-
-/// The closed form on --dense N equally spaced times over the samples' span (analytic_curve).
-io::Json curve_json(const Body& b, const AnalyticSolution& sol, const std::vector<double>& times,
-                    int n) {
-  const AnalyticCurve c = analytic_curve(sol, times.front(), times.back(), n);
-  io::Json om = io::Json::array(), ga = io::Json::array();
-  for (const State& x : c.state) {
-    om.push_back(io::to_json(omega(b, x)));
-    ga.push_back(io::to_json(x.gamma));
-  }
-  io::Json j{{"t", c.t}, {"omega", om}, {"gamma", ga}};
-  if (const auto* l = std::get_if<LagrangeCase>(&sol))
-    j["euler_angles"] = euler_angles_json(*l, c.t);
-  return j;
-}
-
-void add_case_details(io::Json& j, const AnalyticSolution& sol, const std::vector<double>& times) {
-  j["period"] = nullptr;
-  j["nutation_period"] = nullptr;
-  j["turning_points"] = io::Json::array();
-  if (const auto* e = std::get_if<EulerPoinsot>(&sol)) {
-    j["period"] = nullable(e->period);
-    j["modulus"] = e->modulus;
-  } else if (const auto* p = std::get_if<Pendulum>(&sol)) {
-    j["period"] = nullable(p->period);
-    j["kind"] = to_string(p->kind);
-    j["closed_form"] = p->closed_form;
-    j["turning_points"] = p->turning_points;
-  } else if (const auto* l = std::get_if<LagrangeCase>(&sol)) {
-    j["nutation_period"] = nullable(l->nutation_period);
-    j["turning_points"] = {std::min(l->u1, l->u2), std::max(l->u1, l->u2)};
-    const LagrangeQuartic& q = l->quartic;
-    j["E"] = q.E, j["a"] = q.a, j["a1"] = q.a1, j["b"] = q.b, j["c"] = q.c, j["r"] = q.r;
-    j["quartic_roots"] = l->real_roots;
-    io::Json g = io::Json::array();
-    for (double t : times) g.push_back({{"t", t}, {"gamma3", lagrange_gamma3(*l, t)[0]}});
-    j["gamma3"] = g;
-    j["euler_angles"] = euler_angles_json(*l, times);
-  } else if (const auto* b = std::get_if<BrunCase>(&sol)) {
-    add_brun_details(j, *b, times);
-  } else if (const auto* bp = std::get_if<BrunPrymSolution>(&sol)) {
-    add_brun_prym_details(j, *bp);
-  }
-}
-
 /// The comparison of the library (compare_analytic) as JSON: the samples, analytic beside numeric
 /// ("numeric": null where the reference did not reach the time).
 struct Comparison {
@@ -155,14 +81,21 @@ Comparison compare(const io::Scenario& sc, const AnalyticSolution& sol,
   IntegrateOptions opt;
   if (sc.integrate.max_steps) opt.max_steps = *sc.integrate.max_steps;
   const AnalyticComparison r = compare_analytic(sc.model.quadratic(), sc.initial, sol, times, opt);
-  Comparison c{io::Json::array(), r.max_abs_error, r.reference, r.compared, r.seconds_per_sample};
-  const Body& b = sc.model.body();
-  for (std::size_t k = 0; k < r.times.size(); ++k) {
-    io::Json s{{"t", r.times[k]}, {"analytic", state_json(b, r.analytic[k])}, {"numeric", nullptr}};
-    if (const auto& x = r.numeric[k]) s["numeric"] = state_json(b, *x);
-    c.samples.push_back(s);
-  }
-  return c;
+  return {io::samples_json(sc.model.body(), r), r.max_abs_error, r.reference, r.compared,
+          r.seconds_per_sample};
+}
+
+void print_brun_prym(const io::Json& prym) {
+  if (prym.is_null()) return;
+  std::cout << "prym      the motion is linear on the Prym of the spectral curve through three "
+               "points of it:\n";
+  for (const auto& p : prym["divisor"]) std::cout << "  u = " << p["u"].dump() << "\n";
+  std::cout << "  state -> points -> state: error " << format_number(prym["round_trip_error"])
+            << "\n  rates of the Abel-Prym sums at the start " << prym["rate_at_start"].dump()
+            << " (law " << prym["velocity"].dump() << ")\n";
+  std::cout << "  the state at time t: t reduced modulo the torus periods "
+            << prym["torus"]["torus_periods"].dump() << ", the Abel-Prym map inverted from "
+            << prym["table_nodes"].dump() << " nodes over one cell\n";
 }
 
 void print_summary(const io::Scenario& sc, const AnalyticDetection& det, const io::Json& j,
@@ -211,7 +144,7 @@ int run(const AnalyticArgs& a) {
     j["turning_points"] = io::Json::array(), j["samples"] = io::Json::array();
     j["max_abs_error"] = nullptr;
     if (det.kind == AnalyticKind::brun) {
-      j["spectral_curve"] = brun_spectral_json(sc.model.quadratic(), sc.initial);
+      j["spectral_curve"] = io::brun_spectral_json(sc.model.quadratic(), sc.initial);
     }
     if (a.json) {
       j["field"] = field_json(sc.model);
@@ -225,7 +158,7 @@ int run(const AnalyticArgs& a) {
   const AnalyticSolution sol = analytic_solution(sc.model.quadratic(), sc.initial, det.kind);
   std::string source;
   const std::vector<double> times = sample_times(a, sc, solution_period(sol), source);
-  add_case_details(j, sol, times);
+  io::add_case_details(j, sol, times);
   const Comparison c = compare(sc, sol, times);
   j["span_source"] = source;
   j["samples"] = c.samples;
@@ -235,7 +168,7 @@ int run(const AnalyticArgs& a) {
     throw InputError(
         "--dense: expected a time span to draw over, found none (give --t-end or --times)");
   }
-  if (a.curve) j["dense"] = curve_json(sc.model.body(), sol, times, *a.curve);
+  if (a.curve) j["dense"] = io::curve_json(sc.model.body(), sol, times, *a.curve);
   const bool failed = !times.empty() && c.reference.status != Status::finished;
   if (!times.empty()) {
     j["reference"] = {{"method", "rkf78"},

@@ -11,6 +11,7 @@
 #include "command.hpp"
 #include "integration_options.hpp"
 #include "interrupt.hpp"
+#include "newtop/io/chaos_output.hpp"
 #include "newtop/io/json.hpp"
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
@@ -28,17 +29,9 @@ struct ChaosArgs {
   bool json = false;
 };
 
-/// The history keeps at most this many rows (every step of a shorter run).
+/// The history keeps at most this many rows of a fixed-step run (every step of a shorter run; an
+/// adaptive run's every accepted step).
 constexpr std::int64_t kHistoryRows = 10000;
-
-void write_row(std::ostream& os, const phase::ChaosSample& s) {
-  os << format_number(s.t) << ',' << format_number(s.lyapunov_max) << ','
-     << format_number(s.megno_y) << ',' << format_number(s.megno) << ',' << format_number(s.fli);
-  if (s.spectrum) {
-    for (double v : *s.spectrum) os << ',' << format_number(v);
-  }
-  os << '\n';
-}
 
 int run(const ChaosArgs& a) {
   if (io::is_orbit_scenario(a.scenario)) {
@@ -48,27 +41,28 @@ int run(const ChaosArgs& a) {
   }
   const io::Scenario sc = load_body_scenario(a.scenario);
   const RunSettings run = resolve_run(sc, a.integration);
-  phase::check_tangent_method(run.method);
   std::unique_ptr<io::AtomicFile> file;
   if (a.out) {
     file = std::make_unique<io::AtomicFile>(*a.out, sc.input_files);
-    file->stream() << "t,lyapunov_max,megno_y,megno,fli";
-    if (a.spectrum) file->stream() << ",lambda1,lambda2,lambda3,lambda4,lambda5,lambda6";
-    file->stream() << '\n';
+    io::write_chaos_csv_header(file->stream(), a.spectrum);
   }
-  // Fixed-step methods: at most kHistoryRows rows; adaptive ones: every accepted step.
-  const bool adaptive = method_info(run.method.name).kind == MethodKind::adaptive;
-  const std::optional<std::string> split = split_of(run.method);
-  const std::int64_t steps = adaptive ? 1 : fixed_step_count(run.t0, run.t_end, run.method.step);
-  const std::int64_t every = std::max<std::int64_t>(1, (steps + kHistoryRows - 1) / kHistoryRows);
-  std::function<void(const phase::ChaosSample&)> history;
-  if (file) history = [&](const phase::ChaosSample& s) { write_row(file->stream(), s); };
+  phase::ChaosRequest request{.method = run.method,
+                              .t0 = run.t0,
+                              .t_end = run.t_end,
+                              .spectrum = a.spectrum,
+                              .options = run.options};
+  if (file) {
+    request.history = [&](const phase::ChaosSample& s) {
+      io::write_chaos_csv_row(file->stream(), s);
+    };
+    request.history_rows = kHistoryRows;
+  }
+  request.on_step = throw_if_interrupted;
 
   const InterruptGuard guard;
   phase::ChaosResult r;
   try {
-    r = phase::chaos_run(run.method, sc.model, sc.initial, run.t0, run.t_end, run.options,
-                         a.spectrum, history, every, throw_if_interrupted);
+    r = phase::chaos(sc.model, sc.initial, request);
   } catch (const Interrupted& e) {
     std::cerr << "newtop: interrupted by " << signal_name(e.signal)
               << " at t = " << format_number(e.t)
@@ -76,38 +70,10 @@ int run(const ChaosArgs& a) {
     return 128 + e.signal;
   }
   if (file) file->commit();
-  const phase::ChaosSample& c = r.indicators;
   if (a.json) {
-    io::Json j;
-    j["lyapunov_max"] = c.lyapunov_max;
-    j["spectrum"] = c.spectrum ? io::Json(*c.spectrum) : io::Json(nullptr);
-    j["megno"] = c.megno;
-    j["fli"] = c.fli;
-    j["t_end"] = r.outcome.t;
-    j["method"] = run.method.name;
-    j["step"] = adaptive ? io::Json(nullptr) : io::Json(run.method.step);
-    if (adaptive) j["tol"] = run.method.abs_tol;
-    if (split) j["split"] = *split;
-    j["outcome"] = to_string(r.outcome.status);
-    j["flow"] = run.t_end > run.t0 ? "forward" : "backward";
-    print_json(std::cout, j);
+    print_json(std::cout, io::to_json(r, request));
   } else {
-    std::cout << "lambda_max = " << format_number(c.lyapunov_max)
-              << "   MEGNO <Y> = " << format_number(c.megno) << "   FLI = " << format_number(c.fli)
-              << "\n";
-    if (c.spectrum) {
-      std::cout << "spectrum:";
-      for (double v : *c.spectrum) std::cout << ' ' << format_number(v);
-      std::cout << '\n';
-    }
-    std::cout << "t = " << format_number(r.outcome.t)
-              << (run.t_end < run.t0
-                      ? " (the backward flow from t0 = " + format_number(run.t0) + ")"
-                      : std::string())
-              << ", method " << run.method.name << (adaptive ? ", tol " : ", step ")
-              << format_number(adaptive ? run.method.abs_tol : run.method.step)
-              << (split ? " (" + *split + " split)" : std::string()) << ", outcome "
-              << to_string(r.outcome.status) << '\n';
+    io::write_chaos_text(std::cout, r, request);
     if (a.out) std::cout << "history written to " << *a.out << '\n';
   }
   return r.outcome.status == Status::finished ? kExitOk : kExitIncomplete;

@@ -93,12 +93,7 @@ std::optional<int> pitch_key(const std::string& key) {
 
 /// The second key, its range about the scenario's value q0 and the plane of (e, k) they span,
 /// checked before any work.
-struct SecondAxis {
-  PitchPlanePath path;
-  double c, d, q0;
-};
-
-SecondAxis check_second(const ContinueArgs& a, const Vec3& inertia, double e, double p0) {
+ResonanceSecondAxis check_second(const ContinueArgs& a, const Vec3& inertia, double e, double p0) {
   const auto q_key = pitch_key(*a.second);
   if (!q_key || *q_key == *pitch_key(a.parameter)) {
     throw InputError(
@@ -112,7 +107,7 @@ SecondAxis check_second(const ContinueArgs& a, const Vec3& inertia, double e, do
     throw InputError("--second-range: expected a range about the scenario's " + *a.second + " = " +
                      format_number(q0) + ", found " + *a.second_range);
   }
-  SecondAxis s{pitch_plane_path(inertia, e, *pitch_key(a.parameter), *q_key), c, d, q0};
+  ResonanceSecondAxis s{pitch_plane_path(inertia, e, *pitch_key(a.parameter), *q_key), c, d, q0};
   for (const double q : {c, d}) {
     try {
       s.path(p0, q);
@@ -122,29 +117,6 @@ SecondAxis check_second(const ContinueArgs& a, const Vec3& inertia, double e, do
     }
   }
   return s;
-}
-
-/// Each event's locus continued in the second key from q0 to both ends of its range
-/// (docs/continuation.md §2).
-std::vector<Boundary> boundaries(const SecondAxis& s, const Family& f, const SpinOrbitResonance& r,
-                                 double line) {
-  std::vector<Boundary> out;
-  for (const BifurcationEvent& ev : f.events) {
-    Boundary b{ev.type, {}, ""};
-    for (const double end : {s.c, s.d}) {
-      if (end == s.q0) continue;
-      const Family curve = resonance_boundary(s.path, ev, s.q0, end, r, line);
-      if (end == s.c) {
-        b.points.assign(curve.points.rbegin(), curve.points.rend());
-      } else {
-        b.points.insert(b.points.end(), curve.points.begin() + (s.q0 == s.c ? 0 : 1),
-                        curve.points.end());
-      }
-      b.end += (b.end.empty() ? "" : ",") + curve.end;
-    }
-    out.push_back(std::move(b));
-  }
-  return out;
 }
 
 Run run_resonance(const ContinueArgs& a, double p0, double p1) {
@@ -168,20 +140,11 @@ Run run_resonance(const ContinueArgs& a, double p0, double p1) {
       throw InputError("--range: " + a.parameter + " = " + format_number(p) + ": " + e.what());
     }
   }
-  std::optional<SecondAxis> second;
-  if (a.second) second = check_second(a, sc.body.inertia(), base.eccentricity, p0);
-  const double centre = r.half_turns / (2.0 * r.periods);
-  Run run{resonance_family(path, p0, p1, r, line, centre), {"theta0", "dtheta0"}, {}, {}};
-  if (second) run.boundaries = boundaries(*second, run.family, r, line);
-  if (a.switch_branches) {
-    for (std::size_t i = 0; i < run.family.events.size(); ++i) {
-      const BifurcationEvent& ev = run.family.events[i];
-      if (ev.type != BifurcationType::flip && ev.type != BifurcationType::branch_point) continue;
-      run.branches.push_back(
-          {i, resonance_branch(path, ev, std::min(p0, p1), std::max(p0, p1), r, line)});
-    }
-  }
-  return run;
+  ResonanceRequest request{path, p0, p1, r, line, std::nullopt, a.switch_branches};
+  if (a.second) request.second = check_second(a, sc.body.inertia(), base.eccentricity, p0);
+  ResonanceContinuation c = continue_resonance(request);
+  return {
+      std::move(c.family), {"theta0", "dtheta0"}, std::move(c.boundaries), std::move(c.branches)};
 }
 
 Run run_rotation(const ContinueArgs& a, double p0, double p1) {

@@ -8,6 +8,7 @@
 
 #include "newtop/analysis/continuation.hpp"
 #include "newtop/io/output.hpp"
+#include "newtop/orbit/resonance_continuation.hpp"
 
 namespace newtop::app {
 
@@ -20,18 +21,10 @@ struct ContinueArgs {
   std::optional<int> mode;       // --mode (periodic)
 };
 
-/// A located event's locus in the second key (--second).
-struct Boundary {
-  BifurcationType type = BifurcationType::fold;
-  std::vector<FamilyPoint> points;  // in the order of the second parameter's range
-  std::string end;
-};
-
-/// The family that leaves a located flip or branch point (--switch).
-struct Branch {
-  std::size_t event = 0;  // its index in Family::events
-  Family family;
-};
+/// A located event's locus in the second key (--second) and the family from a located flip or
+/// branch point (--switch).
+using Boundary = FamilyBoundary;
+using Branch = FamilyBranch;
 
 /// The family computed, the names of its values, the boundaries and the branches.
 struct Run {

@@ -2,13 +2,11 @@
 // state (an equilibrium or a permanent rotation) or of the spin --axis/--omega (docs/model.md
 // §7–§9); stability diagrams along Ω (--scan-omega) or over two parameters (--scan).
 
-#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
 
 #include "command.hpp"
-#include "newtop/analysis/equilibria.hpp"
 #include "newtop/analysis/stability_report.hpp"
 #include "newtop/analysis/stability_spin.hpp"
 #include "newtop/io/analysis_json.hpp"
@@ -17,6 +15,7 @@
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/output.hpp"
 #include "newtop/io/scenario.hpp"
+#include "newtop/io/stability_text.hpp"
 #include "newtop/sweep/stability_grid.hpp"
 #include "orbit_commands.hpp"
 #include "summary.hpp"
@@ -40,43 +39,27 @@ std::optional<int> parse_axis(const std::optional<std::string>& axis) {
   throw InputError("--axis: expected x, y or z, found '" + *axis + "'");
 }
 
-/// "stable", "unstable" or "inconclusive" (null) for a Lyapunov verdict.
-std::string verdict_text(const io::Json& v) {
-  return v.is_null() ? "inconclusive" : (v.get<bool>() ? "stable" : "unstable");
-}
-
-/// The --scan-omega list as a table of the human summary.
-void print_omega_scan(std::ostream& os, const io::Json& scan) {
-  print_units_line(os);  // before the table, so that the table ends the output (as sweep's)
-  os << "Omega                    max real part            linear     Lyapunov\n";
-  for (const auto& p : scan) {
-    os << std::left << std::setw(25) << format_number(p["omega"].get<double>()) << std::setw(25)
-       << format_number(p["max_real_part"].get<double>()) << std::setw(11)
-       << (p["linearly_stable"].get<bool>() ? "stable" : "unstable")
-       << verdict_text(p["lyapunov_stable"]) << "\n";
+/// The command line's words for a fixed point the library could not analyse: the options and
+/// the scenario named.
+std::string choice_message(const StabilityChoiceError& e, const io::Scenario& sc,
+                           const StabilityArgs& a) {
+  using Reason = StabilityChoiceError::Reason;
+  switch (e.reason) {
+    case Reason::no_equilibrium:
+      return "--equilibrium: " + sc.source + " has no isolated equilibrium" +
+             (e.every_orientation ? " (every orientation is an equilibrium)" : "");
+    case Reason::equilibrium_index:
+      return "--equilibrium: expected 1 to " + std::to_string(e.count) +
+             " (the equilibria listed by newtop equilibria), found " +
+             std::to_string(*a.equilibrium);
+    default:
+      return (a.equilibrium ? "--equilibrium " + std::to_string(*a.equilibrium)
+                            : sc.source + ": [initial]") +
+             ": expected an equilibrium or a permanent rotation (to three digits or more), " +
+             polish_failure(e.polish) +
+             "; see newtop equilibria (and --equilibrium K) / rotations, or use --axis and "
+             "--omega";
   }
-}
-
-/// A number, or `missing` when the JSON value is null (never "null" in a human summary).
-std::string optional_text(const io::Json& v, const std::string& missing) {
-  return v.is_null() ? missing : format_number(v.get<double>());
-}
-
-Vec3 vec(const io::Json& v) { return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()}; }
-
-/// --equilibrium K: the K-th (1-based) isolated equilibrium of `newtop equilibria`, at rest.
-State listed_equilibrium(const io::Scenario& sc, int k) {
-  const EquilibriumSet set = find_equilibria(sc.model);
-  const int count = static_cast<int>(set.equilibria.size());
-  if (count == 0) {
-    throw InputError("--equilibrium: " + sc.source + " has no isolated equilibrium" +
-                     (set.every_orientation ? " (every orientation is an equilibrium)" : ""));
-  }
-  if (k < 1 || k > count) {
-    throw InputError("--equilibrium: expected 1 to " + std::to_string(count) +
-                     " (the equilibria listed by newtop equilibria), found " + std::to_string(k));
-  }
-  return state_from_omega(sc.model.body(), Vec3::Zero(), set.equilibria[k - 1].gamma);
 }
 
 /// The report of the state to analyse: --axis (exact), --equilibrium or [initial] (polished by
@@ -92,54 +75,11 @@ StabilityReport chosen_report(const io::Scenario& sc, const StabilityArgs& a) {
       throw InputError("--" + std::string(e.what()));
     }
   }
-  const State given = a.equilibrium ? listed_equilibrium(sc, *a.equilibrium) : sc.initial;
-  const PolishedFixedPoint p = polish_fixed_point(sc.model, given);
-  if (!p.converged) {
-    throw InputError(
-        (a.equilibrium ? "--equilibrium " + std::to_string(*a.equilibrium)
-                       : sc.source + ": [initial]") +
-        ": expected an equilibrium or a permanent rotation (to three digits or more), " +
-        polish_failure(p) +
-        "; see newtop equilibria (and --equilibrium K) / rotations, or use --axis and "
-        "--omega");
-  }
-  // The spin families about principal axes (and their thresholds) are the quadratic field's.
-  const std::optional<int> spin_axis = sc.model.kind() == FieldKind::quadratic
-                                           ? spin_axis_of(sc.model.quadratic(), p.state)
-                                           : std::nullopt;
-  return stability_report(sc.model, p.state, p, spin_axis);
-}
-
-std::string complex_text(const io::Json& z) {
-  const double im = z[1].get<double>();
-  return format_number(z[0].get<double>()) + (im < 0 ? "-" : "+") + format_number(std::abs(im)) +
-         "i";
-}
-
-void print_report(std::ostream& os, const io::Json& j, const std::string& formula_note) {
-  const io::Json& p = j["polish"];
-  if (p["iterations"].get<int>() > 0) {
-    os << "polished  by Newton's method: correction "
-       << format_number(p["correction"].get<double>()) << " (residual "
-       << format_number(p["residual_given"].get<double>()) << " -> "
-       << format_number(j["residual"].get<double>()) << " in " << p["iterations"].get<int>()
-       << (p["iterations"].get<int>() == 1 ? " step" : " steps") << ")\n";
-  }
-  os << "state     omega = " << format_vector(vec(j["omega"]))
-     << "  gamma = " << format_vector(vec(j["gamma"])) << "  (fixed-point residual "
-     << format_number(j["residual"].get<double>()) << ")\n";
-  os << "eigenvalues on the symplectic leaf:";
-  for (const auto& z : j["eigenvalues"]) os << "  " << complex_text(z);
-  os << "\nmax real part " << format_number(j["max_real_part"].get<double>())
-     << "\nlinear (spectral) stability: "
-     << (j["linearly_stable"].get<bool>() ? "stable" : "unstable")
-     << "\nLyapunov (energy-Casimir): " << verdict_text(j["lyapunov_stable"]) << "\n";
-  if (!j["axis"].is_null()) {
-    os << "spin axis " << j["axis"].get<std::string>() << " (" << j["axis_class"].get<std::string>()
-       << " moment); threshold Omega: formula "
-       << optional_text(j["threshold_omega_formula"], formula_note) << ", numeric "
-       << optional_text(j["threshold_omega_numeric"], "none (no unstable-to-stable change)")
-       << "\n";
+  try {
+    return a.equilibrium ? stability_of_equilibrium(sc.model, *a.equilibrium)
+                         : stability_of_state(sc.model, sc.initial);
+  } catch (const StabilityChoiceError& e) {
+    throw InputError(choice_message(e, sc, a));
   }
 }
 
@@ -218,8 +158,12 @@ int run(const StabilityArgs& a) {
   std::cout << "newtop stability " << sc.source << "\n";
   print_model(std::cout, sc.model);
   if (a.equilibrium) std::cout << "equilibrium " << *a.equilibrium << " of newtop equilibria\n";
-  print_report(std::cout, j, c.formula_note);
-  if (omega_range) print_omega_scan(std::cout, j["scan"]);
+  io::write_stability_text(std::cout, j, c.formula_note);
+  if (omega_range) {
+    print_units_line(
+        std::cout);  // before the table, so that the table ends the output (as sweep's)
+    io::write_omega_scan_text(std::cout, j["scan"]);
+  }
   if (a.out) std::cout << "diagram written to " << *a.out << "\n";
   return kExitOk;
 }

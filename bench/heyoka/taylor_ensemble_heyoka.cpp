@@ -7,7 +7,8 @@
 // Built only when CMake finds heyoka (CMAKE_PREFIX_PATH); run:
 //   build/bench/taylor_ensemble_heyoka [regimes] [rounds] [lanes]
 //   regimes: letters among a, b, c (default abc); rounds: the best of (default 3); lanes: heyoka's
-//   batch size (default 8, AVX-512's doubles), newtop's ensemble runs 2 × lanes trajectories.
+//   batch size (default 8, AVX-512's doubles), newtop's ensemble runs 2 × lanes trajectories;
+//   0: newtop's scalar taylor against heyoka's scalar integrator (taylor_adaptive<double>).
 
 #include <cstdio>
 #include <cstdlib>
@@ -65,17 +66,38 @@ WpPoint heyoka_batch(const Regime& r, const LState& ref, double tol, std::uint32
   return {tol, state_error(x, ref), cpu / lanes};
 }
 
+// heyoka's scalar integrator (taylor_adaptive<double>) on the regime's start.
+WpPoint heyoka_scalar(const Regime& r, const LState& ref, double tol, int rounds) {
+  const std::vector<double> start{r.x0.m[0],     r.x0.m[1],     r.x0.m[2],
+                                  r.x0.gamma[0], r.x0.gamma[1], r.x0.gamma[2]};
+  hy::taylor_adaptive<double> ta(euler_poisson(r.model), start, hy::kw::tol = tol);
+  const double cpu = best_cpu(rounds, [&] {
+    std::copy(start.begin(), start.end(), ta.get_state_data());
+    ta.set_time(0.0);
+    ta.propagate_until(r.T);
+  });
+  const auto& x = ta.get_state();
+  return {tol, state_error(State{Vec3(x[0], x[1], x[2]), Vec3(x[3], x[4], x[5])}, ref), cpu};
+}
+
+// lanes = 0: newtop's scalar taylor against heyoka's scalar integrator.
 void run_regime(const Regime& r, int rounds, std::uint32_t lanes) {
   const LState ref = reference(r, 1e-19L);
   std::vector<WpPoint> ours, theirs;
   bool same = true;
   std::printf("\n## %s\n%-8s %12s %14s %12s %14s\n", r.description.c_str(), "tol", "newtop error",
-              "ensemble ms", "heyoka error", "batch ms");
+              lanes == 0 ? "scalar ms" : "ensemble ms", "heyoka error",
+              lanes == 0 ? "scalar ms" : "batch ms");
   for (double tol : tolerance_ladder()) {
     TaylorStepper s(tol, tol);
     const State xs = integrate(s, r.model, r.x0, 0.0, r.T, IntegrateOptions{}).state;
-    ours.push_back(ensemble_taylor(r, ref, tol, 2 * lanes, rounds, xs, same));
-    theirs.push_back(heyoka_batch(r, ref, tol, lanes, rounds));
+    if (lanes == 0) {
+      ours.push_back(scalar_taylor(r, ref, tol, rounds));
+      theirs.push_back(heyoka_scalar(r, ref, tol, rounds));
+    } else {
+      ours.push_back(ensemble_taylor(r, ref, tol, 2 * lanes, rounds, xs, same));
+      theirs.push_back(heyoka_batch(r, ref, tol, lanes, rounds));
+    }
     std::printf("%-8.1e %12.3e %14.5f %12.3e %14.5f\n", tol, ours.back().error,
                 1e3 * ours.back().cpu, theirs.back().error, 1e3 * theirs.back().cpu);
   }
@@ -83,8 +105,9 @@ void run_regime(const Regime& r, int rounds, std::uint32_t lanes) {
   for (double target : {1e-9, 1e-12}) {
     const auto a = time_at(ours, target), b = time_at(theirs, target);
     if (a && b) {
-      std::printf("error %.0e: ensemble %.5f ms, heyoka batch %.5f ms per trajectory (%.2fx)\n",
-                  target, 1e3 * *a, 1e3 * *b, *a / *b);
+      std::printf("error %.0e: %s %.5f ms, heyoka %s %.5f ms per trajectory (%.2fx)\n", target,
+                  lanes == 0 ? "scalar" : "ensemble", 1e3 * *a, lanes == 0 ? "scalar" : "batch",
+                  1e3 * *b, *a / *b);
     } else {
       std::printf("error %.0e: not bracketed by the ladder\n", target);
     }
@@ -97,8 +120,12 @@ int main(int argc, char** argv) {
   const std::string which = argc > 1 ? argv[1] : "abc";
   const int rounds = argc > 2 ? std::atoi(argv[2]) : 3;
   const auto lanes = static_cast<std::uint32_t>(argc > 3 ? std::atoi(argv[3]) : 8);
-  std::printf("newtop Taylor ensemble (%s) against heyoka's batch mode (%u lanes)\n",
-              std::string(newtop::simd_path_name(newtop::best_simd_path())).c_str(), lanes);
+  if (lanes == 0) {
+    std::printf("newtop's scalar taylor against heyoka's scalar integrator\n");
+  } else {
+    std::printf("newtop Taylor ensemble (%s) against heyoka's batch mode (%u lanes)\n",
+                std::string(newtop::simd_path_name(newtop::best_simd_path())).c_str(), lanes);
+  }
   if (which.find('a') != std::string::npos) run_regime(generic(), rounds, lanes);
   if (which.find('b') != std::string::npos) run_regime(fast_spin(1e-3, "b3"), rounds, lanes);
   if (which.find('c') != std::string::npos) run_regime(libration(), rounds, lanes);

@@ -23,16 +23,14 @@ int main() {
               st.spectrum.linearly_stable ? "linearly stable" : "unstable");
 
   const MethodSettings method{"splitting6", 0.01};
-  std::vector<phase::Crossing> crossings;
-  phase::IntegralsDrift drift;
-  const phase::SurfaceFunction g(phase::parse_surface("gamma1 = 0"), model.body());
-  const phase::SectionSettings settings{phase::Direction::up, 50, false};
-  const phase::SectionRun sec =
-      phase::section_orbit(method, model, g, settings, 0, x0, 0.0, 1e4, {}, crossings, drift);
-  std::printf("section: %zu crossings (%s)\n", crossings.size(),
-              sec.by_crossings ? "stopped by crossings" : "stopped at t_end");
+  const phase::SectionResult sec = phase::section(model, x0,
+                                                  {.method = method,
+                                                   .surface = phase::parse_surface("gamma1 = 0"),
+                                                   .max_crossings = 50,
+                                                   .t_end = 1e4});
+  std::printf("section: %zu crossings (%s)\n", sec.crossings.size(), phase::to_string(sec.status));
 
-  const phase::ChaosResult ch = phase::chaos_run(method, model, x0, 0.0, 100.0, {}, false);
+  const phase::ChaosResult ch = phase::chaos(model, x0, {.method = method, .t_end = 100.0});
   std::printf("MEGNO %.4f, lambda_max %.4g\n", ch.indicators.megno, ch.indicators.lyapunov_max);
 
   // A heavy symmetric top: Lagrange's case, its closed form against rkf78 at 5 times.
@@ -46,7 +44,8 @@ int main() {
               cmp.max_abs_error.value_or(-1.0));
 
   // The closed form agrees with rkf78 at tol 1e-13 to ~1e-11 here; 1e-8 leaves a wide margin.
-  const bool ok = !eq.equilibria.empty() && crossings.size() == 50 &&
+  const bool ok = !eq.equilibria.empty() && sec.crossings.size() == 50 &&
+                  sec.status == phase::SectionStatus::crossings &&
                   ch.outcome.status == Status::finished && det.kind == AnalyticKind::lagrange &&
                   cmp.max_abs_error && *cmp.max_abs_error < 1e-8;
   return ok ? 0 : 1;

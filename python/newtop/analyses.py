@@ -224,9 +224,10 @@ def _table(name, keys):
 
 
 def scenario_text(model, state=None, *, t0=0.0, t_end=None, method=None, step=None, tol=None):
-    """The scenario file of a quadratic-field Model built in code (a body given by its principal
-    moments) and a state, as TOML text: what newtop.sweep runs a Model or a Scenario built in
-    code on. The state is written as (omega, gamma)."""
+    """The scenario file of a Model built in code (the quadratic field on any body, the exact and
+    multipole fields of point masses or an ellipsoid, a gyrostat) and a state, as TOML text: what
+    newtop.sweep runs a Model or a Scenario built in code on (docs/sweep.md). The state is
+    written as (omega, gamma); a polyhedron built in code is refused (its mesh is a file)."""
     if isinstance(model, _newtop.Scenario):
         sc = model
         model, state = sc.model, sc.initial if state is None else state
@@ -234,22 +235,9 @@ def scenario_text(model, state=None, *, t0=0.0, t_end=None, method=None, step=No
         t_end = sc.t_end if t_end is None else t_end
         if method is None and step is None and tol is None:
             method, step, tol = sc.method, sc.step, sc.tol
-    if model.kind != "quadratic":
-        raise ValueError("base: expected a model of the quadratic field built in code, found "
-                         "the %s field (give its scenario file)" % model.kind)
-    body = model.body
-    if not np.array_equal(np.asarray(body.principal_axes), np.eye(3)):
-        raise ValueError("base: expected a body given by its principal moments (principal axes "
-                         "the identity), found other principal axes")
     if state is None:
         raise ValueError("base: a Model needs state= (the initial state of every point)")
-    state = _state(state)
-    field = model.field
-    text = _table("body", {"inertia": list(body.inertia), "mass": body.mass,
-                           "center_of_mass": list(body.center_of_mass),
-                           "gyrostat": list(body.gyrostat)})
-    text += _table("field", {"g": field.g, "lambda": field.lambda_})
-    text += _table("initial", {"omega": list(state.omega(body)), "gamma": list(state.gamma)})
+    text = _newtop._scenario_text(model, _state(state))
     integrate = {"t0": t0 if t0 else None, "t_end": t_end, "method": method, "step": step,
                  "tol": tol}
     if any(v is not None for v in integrate.values()):

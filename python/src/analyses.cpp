@@ -273,17 +273,16 @@ void bind_chaos(py::module_& m) {
          const std::optional<std::string>& method, std::optional<double> step,
          std::optional<double> tol, bool spectrum, std::optional<std::int64_t> max_steps,
          bool history) {
-        const MethodSettings s = method_settings(model, method, step, tol);
-        phase::check_tangent_method(s);
-        check_time_span(t0, t_end);
-        IntegrateOptions o;
-        if (max_steps) o.max_steps = *max_steps;
+        phase::ChaosRequest r{.method = method_settings(model, method, step, tol),
+                              .t0 = t0,
+                              .t_end = t_end,
+                              .spectrum = spectrum};
+        if (max_steps) r.options.max_steps = *max_steps;
         ChaosOut out;
-        out.method = s.name;
-        std::function<void(const phase::ChaosSample&)> keep;
-        if (history) keep = [&out](const phase::ChaosSample& x) { out.history.push_back(x); };
+        out.method = r.method.name;
+        if (history) r.history = [&out](const phase::ChaosSample& x) { out.history.push_back(x); };
         const py::gil_scoped_release unlocked;
-        out.result = phase::chaos_run(s, model, state, t0, t_end, o, spectrum, keep, 1);
+        out.result = phase::chaos(model, state, r);
         return out;
       },
       py::arg("model"), py::arg("state"), py::arg("t_end"), py::kw_only(), py::arg("t0") = 0.0,

@@ -15,6 +15,7 @@
 #include "newtop/analysis/rest_family.hpp"
 #include "newtop/analysis/rotation_family.hpp"
 #include "newtop/orbit/orbit_families.hpp"
+#include "newtop/orbit/resonance_continuation.hpp"
 
 namespace py = pybind11;
 
@@ -77,20 +78,16 @@ void bind_continuation(py::module_& m) {
         } else {
           throw InputError("parameter: expected 'eccentricity' or 'k', found '" + parameter + "'");
         }
-        const double centre = r.half_turns / (2.0 * r.periods);
-        const Family f = resonance_family(path, start, end, r, line, centre);
-        py::dict out = family_dict(f);
+        ResonanceRequest request{path, start, end, r, line, std::nullopt, switch_branches};
+        const ResonanceContinuation c = continue_resonance(request);
+        py::dict out = family_dict(c.family);
         if (switch_branches) {
           py::list branches;
-          for (std::size_t i = 0; i < f.events.size(); ++i) {
-            const BifurcationEvent& ev = f.events[i];
-            if (ev.type != BifurcationType::flip && ev.type != BifurcationType::branch_point)
-              continue;
-            py::dict b = family_dict(
-                resonance_branch(path, ev, std::min(start, end), std::max(start, end), r, line));
-            b["event"] = i;
-            b["type"] = to_string(ev.type);
-            branches.append(b);
+          for (const FamilyBranch& b : c.branches) {
+            py::dict d = family_dict(b.family);
+            d["event"] = b.event;
+            d["type"] = to_string(c.family.events[b.event].type);
+            branches.append(d);
           }
           out["branches"] = branches;
         }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "newtop/io/scenario_text.hpp"
 
 namespace py = pybind11;
 
@@ -70,6 +71,9 @@ py::dict run(const std::string& text, const std::string& base_source, const std:
 }  // namespace
 
 void bind_sweep(py::module_& m) {
+  m.def("_scenario_text", &io::scenario_text, py::arg("model"), py::arg("state"),
+        "[body], [mass_model], [field] and [initial] of a model and state built in code, as "
+        "scenario TOML (io::scenario_text): what a sweep of a Model runs on.");
   m.def("_sweep", &run, py::arg("text"), py::arg("base_source"), py::arg("base_text"),
         py::arg("threads") = 0,
         "A sweep's text (as a sweep file's) over the base scenario's text: points, failed, "

@@ -33,6 +33,9 @@ AnalyticComparison compare_analytic(const QuadraticModel& model, const State& x0
                                     const AnalyticSolution& sol, const std::vector<double>& times,
                                     IntegrateOptions options) {
   validate(x0);
+  if (const auto* brun = std::get_if<BrunCase>(&sol)) {
+    for (const double t : times) brun_check_time(*brun, t);  // every time refused before any work
+  }
   AnalyticComparison c;
   c.times = times;
   if (times.empty()) return c;

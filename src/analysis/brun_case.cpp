@@ -1,5 +1,6 @@
 #include "newtop/analysis/brun_case.hpp"
 
+#include <algorithm>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <limits>
@@ -15,6 +16,8 @@ namespace {
 constexpr double kTwoPi = 2 * std::numbers::pi;
 // G is monotone and its root lies within a few turns of the mean-motion guess.
 constexpr int kBracketSteps = 64;
+/// 2^53: a phase of that size has a unit in the last place of 2 rad (no digit of the angle left).
+constexpr double kPhaseLimit = 9007199254740992.0;
 // Frequencies are accurate to ~1e-12 (trapezoidal periods to a few ulps, then a 2×2 solve);
 // a ratio within 1e-9 of p/q with q, p ≤ 20 is reported as a resonance.
 constexpr double kResonanceTolerance = 1e-9;
@@ -81,7 +84,18 @@ std::array<double, 2> brun_abel_sums(const BrunCase& b, const std::array<double,
   return {0.5 * b.curve.kappa * (U[0] - b.abel0[0]), U[1] - b.abel0[1]};
 }
 
+void brun_check_time(const BrunCase& b, double t) {
+  const double phase = std::max(std::abs(b.frequency[0] * t), std::abs(b.frequency[1] * t));
+  if (!std::isfinite(t) || !(phase < kPhaseLimit)) {
+    throw InputError(
+        "times: expected times whose phases omega*t stay below 2^53 (beyond, no "
+        "digit of the angle remains in double precision), found t = " +
+        format_number(t) + " (omega*t = " + format_number(phase) + ")");
+  }
+}
+
 std::array<double, 2> brun_angles_at(const BrunCase& b, double t) {
+  brun_check_time(b, t);
   static_assert(kBrunOrientation[0] == -1.0 && kBrunOrientation[1] == 1.0);
   // U_0 = −A_1^(0)(φ1) + A_2^(0)(φ2) = T0 gives φ2(φ1), increasing (A^(0) increases); then
   // G(φ1) = U_1(φ1, φ2(φ1)) − T1 has G′ = (u2 − u1)/√R̃1 > 0: two monotone one-dimensional

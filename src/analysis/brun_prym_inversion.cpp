@@ -317,4 +317,16 @@ State brun_state_at(const QuadraticModel& model, const State& x0, double t) {
   return brun_prym_state_at(brun_prym_solution(model, x0), t).state;
 }
 
+BrunPrymCheck brun_prym_check(const BrunPrymSolution& s) {
+  const BrunCurve& k = s.curve;
+  const State& x0 = s.initial;
+  BrunPrymCheck c;
+  c.divisor = brun_prym_divisor(k, x0);
+  const State back = brun_prym_state(k, c.divisor);
+  c.round_trip_error = std::max((back.m - x0.m).cwiseAbs().maxCoeff(),
+                                (back.gamma - x0.gamma).cwiseAbs().maxCoeff());
+  c.rate = brun_prym_rate(k, x0, rhs(s.model, x0));
+  return c;
+}
+
 }  // namespace newtop

@@ -86,13 +86,21 @@ StabilityReport stability_of_axis(const Model& model, int axis, double Omega) {
 StabilityReport stability_of_equilibrium(const Model& model, int k) {
   const EquilibriumSet set = find_equilibria(model);
   const int count = static_cast<int>(set.equilibria.size());
+  using Reason = StabilityChoiceError::Reason;
   if (count == 0) {
-    throw InputError(std::string("equilibrium: the model has no isolated equilibrium") +
-                     (set.every_orientation ? " (every orientation is an equilibrium)" : ""));
+    StabilityChoiceError e(
+        Reason::no_equilibrium,
+        std::string("equilibrium: the model has no isolated equilibrium") +
+            (set.every_orientation ? " (every orientation is an equilibrium)" : ""));
+    e.every_orientation = set.every_orientation;
+    throw e;
   }
   if (k < 1 || k > count) {
-    throw InputError("equilibrium: expected 1 to " + std::to_string(count) +
-                     " (the equilibria of find_equilibria), found " + std::to_string(k));
+    StabilityChoiceError e(Reason::equilibrium_index,
+                           "equilibrium: expected 1 to " + std::to_string(count) +
+                               " (the equilibria of find_equilibria), found " + std::to_string(k));
+    e.count = count;
+    throw e;
   }
   return stability_of_state(
       model, state_from_omega(model.body(), Vec3::Zero(), set.equilibria[k - 1].gamma));
@@ -111,9 +119,12 @@ StabilityReport stability_of_state(const Model& model, const State& s) {
   validate(s);
   const PolishedFixedPoint p = polish_fixed_point(model, s);
   if (!p.converged) {
-    throw InputError(
+    StabilityChoiceError e(
+        StabilityChoiceError::Reason::not_fixed_point,
         "state: expected an equilibrium or a permanent rotation (to three digits or more), " +
-        polish_failure(p));
+            polish_failure(p));
+    e.polish = p;
+    throw e;
   }
   // The spin families about principal axes (and their thresholds) are the quadratic field's.
   const std::optional<int> axis = model.kind() == FieldKind::quadratic

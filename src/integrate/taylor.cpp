@@ -77,12 +77,11 @@ template <class L>
       pair(R[0], r, P, Rs, S, T);
     }
     const double inv = kInverse[static_cast<std::size_t>(n)];
-    // m^[n+1] and ω^[n+1] = I⁻¹ m^[n+1] formed side by side (the factors of P and Rs off the
-    // chain from one order to the next).
+    // m^[n+1] and ω^[n+1] = I⁻¹ m^[n+1].
     const L linear = (k1 * r.w2 - k2 * r.w1) + (r.g1 * b2 - r.g2 * b1);
-    O::store(s.m[n + 1], (d_spin * P + d_field * Rs + linear) * inv);
-    const L to_w = inv_i * inv;
-    W[n + 1] = (d_spin * to_w) * P + (d_field * to_w) * Rs + linear * to_w;
+    const L m_next = (d_spin * P + d_field * Rs + linear) * inv;
+    O::store(s.m[n + 1], m_next);
+    W[n + 1] = m_next * inv_i;
     G = (S - T) * inv;
     O::store(s.gamma[n + 1], G);
     if (s.attitude) {
@@ -194,6 +193,9 @@ double taylor_step(const TaylorSeries& s, double abs_tol, double rel_tol) {
   return taylor_lanes::step_from_norms(
       s.order, [&](int n) { return coefficient_norm(s, n); }, abs_tol, rel_tol);
 }
+
+double taylor_step_log2(double x) { return taylor_math::step_log2(x); }
+double taylor_step_exp2(double y) { return taylor_math::step_exp2(y); }
 
 int taylor_order(double tol) {
   const double digits = std::abs(std::log(tol));

@@ -32,10 +32,10 @@ void check_run(double t0, double t1, const IntegrateOptions& options,
 
 }  // namespace
 
-TaylorEnsemble::TaylorEnsemble(double abs_tol, double rel_tol, SimdPath path)
+TaylorEnsemble::TaylorEnsemble(double abs_tol, double rel_tol, SimdPath path, int order)
     : abs_tol_(abs_tol),
       rel_tol_(rel_tol),
-      order_(TaylorStepper(abs_tol, rel_tol).order()),  // its checks and order rule
+      order_(TaylorStepper(abs_tol, rel_tol, order).order()),  // its checks and order rule
       path_(path) {
   if (!simd_path_available(path)) {
     throw InputError("simd: expected a path this build and CPU support (best: " +

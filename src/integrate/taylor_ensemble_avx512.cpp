@@ -16,6 +16,9 @@ void expand(const double* consts, const double* x, int order, double* series) {
 void sum(const double* series, int order, const double* h, double* out) {
   taylor_ensemble_simd::sum<V, kLanes>(series, order, h, out);
 }
+unsigned advance(const double* series, int order, const double* h, unsigned lanes, double* x) {
+  return taylor_ensemble_simd::advance<V, kLanes>(series, order, h, lanes, x);
+}
 
 void expand_tangent(const double* consts, const double* series, const double* v, int order,
                     double* tangent) {
@@ -26,10 +29,14 @@ void norms(const double* series, const double* tangent, int order, double* out) 
   taylor_ensemble_simd::norms<V, kLanes>(series, tangent, order, out);
 }
 
+void steps(const double* norms, int order, double abs_tol, double rel_tol, double* out) {
+  taylor_ensemble_simd::steps<V, kLanes>(norms, order, abs_tol, rel_tol, out);
+}
+
 }  // namespace
 
 TaylorLaneKernel taylor_lane_kernel_avx512() {
-  return {kLanes, expand, sum, expand_tangent, norms};
+  return {kLanes, expand, sum, advance, expand_tangent, norms, steps};
 }
 
 }  // namespace newtop::detail

@@ -15,6 +15,8 @@
 #include <cstddef>
 #include <cstring>
 
+#include "taylor_math.hpp"
+
 namespace newtop::detail {
 
 inline constexpr int kTaylorLaneConstants = 15;  // inv_i, k, b, d_spin, d_field
@@ -25,11 +27,17 @@ struct TaylorLaneKernel {
   int lanes;
   void (*expand)(const double* consts, const double* x, int order, double* series);
   void (*sum)(const double* series, int order, const double* h, double* out);
+  /// The series summed at h[l] (as `sum`) in each lane l whose bit is set in `lanes`, written over
+  /// the state x where all six components are finite; returns the bits of the lanes written.
+  unsigned (*advance)(const double* series, int order, const double* h, unsigned lanes, double* x);
   void (*expand_tangent)(const double* consts, const double* series, const double* v, int order,
                          double* tangent);
   /// The max norms (taylor_lanes::pair_norm) of the coefficients 0, order − 1 and order of each
   /// lane's series, at norms[k L + l]; with `tangent`, nan_max of the state's and the tangent's.
   void (*norms)(const double* series, const double* tangent, int order, double* norms);
+  /// taylor_math::regular_step of each lane from its norms (as `norms` writes them), at steps[l]:
+  /// the lane's step where its norms p − 1 and p are finite and nonzero.
+  void (*steps)(const double* norms, int order, double abs_tol, double rel_tol, double* steps);
 };
 
 TaylorLaneKernel taylor_lane_kernel_portable();
@@ -138,9 +146,9 @@ void expand(const double* consts, const double* x, int order, double* series) {
       const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
       const V linear =
           (k[c1] * w[n][c2] - k[c2] * w[n][c1]) + (g[n][c1] * b[c2] - g[n][c2] * b[c1]);
-      store(next + c * L, (d_spin[c] * a.p[c] + d_field[c] * a.rs[c] + linear) * inv);
-      const V to_w = inv_i[c] * inv;
-      w[n + 1][c] = (d_spin[c] * to_w) * a.p[c] + (d_field[c] * to_w) * a.rs[c] + linear * to_w;
+      const V m_next = (d_spin[c] * a.p[c] + d_field[c] * a.rs[c] + linear) * inv;
+      store(next + c * L, m_next);
+      w[n + 1][c] = m_next * inv_i[c];
     }
     for (int c = 0; c < 3; ++c) {
       g[n + 1][c] = (a.s[c] - a.t[c]) * inv;
@@ -254,11 +262,17 @@ void norms(const double* series, const double* tangent, int order, double* out) 
   }
 }
 
+template <class V, int L>
+void steps(const double* norms, int order, double abs_tol, double rel_tol, double* out) {
+  store(out, taylor_math::regular_step(load<V>(norms), load<V>(norms + L), load<V>(norms + 2 * L),
+                                       abs_tol, rel_tol, order));
+}
+
 // The series summed at h, a step per lane (taylor_lanes::sum_series: Horner in h² over the even
 // and the odd coefficients).
 template <class V, int L>
-void sum(const double* series, int order, const double* h_lanes, double* out) {
-  const V h = load<V>(h_lanes);
+[[gnu::always_inline]] inline void sum_lanes(const double* series, int order, const V& h,
+                                             V (&out)[6]) {
   const V h2 = h * h;
   auto horner = [&](int top, V(&x)[6]) {
     for (int c = 0; c < 6; ++c) x[c] = load<V>(series + (6 * top + c) * L);
@@ -270,7 +284,30 @@ void sum(const double* series, int order, const double* h_lanes, double* out) {
   V even[6], other[6];
   horner(order - odd, even);
   horner(order - 1 + odd, other);
-  for (int c = 0; c < 6; ++c) store(out + c * L, even[c] + other[c] * h);
+  for (int c = 0; c < 6; ++c) out[c] = even[c] + other[c] * h;
+}
+
+template <class V, int L>
+void sum(const double* series, int order, const double* h_lanes, double* out) {
+  V x[6];
+  sum_lanes<V, L>(series, order, load<V>(h_lanes), x);
+  for (int c = 0; c < 6; ++c) store(out + c * L, x[c]);
+}
+
+template <class V, int L>
+unsigned advance(const double* series, int order, const double* h_lanes, unsigned lanes,
+                 double* x) {
+  using M = decltype(V{} == V{});  // a lane mask
+  V trial[6];
+  sum_lanes<V, L>(series, order, load<V>(h_lanes), trial);
+  M index{};
+  for (int l = 0; l < L; ++l) index[l] = l;
+  M write = ((M{} + static_cast<long>(lanes)) >> index & 1) != 0;
+  for (int c = 0; c < 6; ++c) write &= (trial[c] - trial[c]) == 0.0;  // finite (is_finite)
+  for (int c = 0; c < 6; ++c) store(x + c * L, write ? trial[c] : load<V>(x + c * L));
+  unsigned written = 0;
+  for (int l = 0; l < L; ++l) written |= write[l] != 0 ? 1u << l : 0u;
+  return written;
 }
 
 }  // namespace taylor_ensemble_simd

@@ -73,17 +73,19 @@ class BatchRun {
         tangent_(tangent),
         lanes_(L_) {
     const std::size_t coefficients = 6 * L_ * (detail::TaylorSeries::kMaxOrder + 1);
-    workspace.assign((detail::kTaylorLaneConstants + 6 * 4 + 1 + 6) * L_ + 2 * coefficients, 0.0);
+    workspace.assign((detail::kTaylorLaneConstants + 6 * 3 + 1 + 6 + 2) * L_ + 2 * coefficients,
+                     0.0);
     consts_ = workspace.data();
     x_ = consts_ + detail::kTaylorLaneConstants * L_;
-    trial_ = x_ + 6 * L_;
-    h_ = trial_ + 6 * L_;
+    h_ = x_ + 6 * L_;
     v_ = h_ + L_;
     v_trial_ = v_ + 6 * L_;
     series_ = v_trial_ + 6 * L_;
     tangent_series_ = series_ + coefficients;
     norms_ = tangent_series_ + coefficients;
     tangent_norms_ = norms_ + 3 * L_;
+    steps_ = tangent_norms_ + 3 * L_;
+    tangent_steps_ = steps_ + L_;
     outcomes_.resize(states.size());
   }
 
@@ -95,9 +97,11 @@ class BatchRun {
     while (std::any_of(lanes_.begin(), lanes_.end(), [](const LaneRun& r) { return r.active; })) {
       kernel_.expand(consts_, x_, e_.order(), series_);
       kernel_.norms(series_, nullptr, e_.order(), norms_);
+      kernel_.steps(norms_, e_.order(), e_.abs_tol(), e_.rel_tol(), steps_);
       if (tangent_) {
         kernel_.expand_tangent(consts_, series_, v_, e_.order(), tangent_series_);
         kernel_.norms(series_, tangent_series_, e_.order(), tangent_norms_);
+        kernel_.steps(tangent_norms_, e_.order(), e_.abs_tol(), e_.rel_tol(), tangent_steps_);
       }
       bool any = false;
       for (std::size_t l = 0; l < L_; ++l) {
@@ -106,10 +110,17 @@ class BatchRun {
         if (lanes_[l].active) any = decide(l) || any;
       }
       if (!any) continue;
-      kernel_.sum(series_, e_.order(), h_, trial_);
-      if (tangent_) kernel_.sum(tangent_series_, e_.order(), h_, v_trial_);
+      unsigned lanes = 0;
+      for (std::size_t l = 0; l < L_; ++l) lanes |= lanes_[l].stepping ? 1u << l : 0u;
+      if (tangent_) {
+        kernel_.sum(tangent_series_, e_.order(), h_, v_trial_);
+        for (std::size_t l = 0; l < L_; ++l) {
+          if (lanes_[l].stepping && !tangent_trial(l).allFinite()) lanes &= ~(1u << l);
+        }
+      }
+      const unsigned written = kernel_.advance(series_, e_.order(), h_, lanes, x_);
       for (std::size_t l = 0; l < L_; ++l) {
-        if (lanes_[l].stepping) accept(l);
+        if (lanes_[l].stepping) accept(l, (written >> l & 1u) != 0);
       }
     }
     return std::move(outcomes_);
@@ -133,11 +144,17 @@ class BatchRun {
 
   // taylor_step of the lane's series; with `with_tangent`, taylor_tangent_step of the state's and
   // the vector's series together.
-  // The norms of orders 0, p − 1 and p come from the kernel (norms_, tangent_norms_), the others
+  // Where the norms p − 1 and p are finite and nonzero, the kernel's step (steps_,
+  // tangent_steps_: regular_step, as step_from_norms takes it there); elsewhere step_from_norms
+  // with the norms of orders 0, p − 1 and p from the kernel (norms_, tangent_norms_), the others
   // (needed only where both of the last two coefficients vanish) from lane_norm.
   double lane_step(std::size_t l, bool with_tangent = false) const {
     const int p = e_.order();
     const double* pre = with_tangent ? tangent_norms_ : norms_;
+    if (detail::taylor_lanes::regular_norm(pre[L_ + l]) &&
+        detail::taylor_lanes::regular_norm(pre[2 * L_ + l])) {
+      return (with_tangent ? tangent_steps_ : steps_)[l];
+    }
     auto norm = [&](int n) {
       if (n == 0 || n >= p - 1) return pre[(n == 0 ? 0 : n == p ? 2 : 1) * L_ + l];
       const double r = lane_norm(n, l, series_);
@@ -172,11 +189,16 @@ class BatchRun {
     }
   }
 
-  // The sampling observer and the step observer of the driver, after an accepted step from t_old
-  // (or at t0, with t_old = t).
-  void notify(std::size_t l, double t_old) {
+  TangentVector tangent_trial(std::size_t l) const {
+    TangentVector v;
+    for (std::size_t c = 0; c < 6; ++c) v[static_cast<Eigen::Index>(c)] = v_trial_[c * L_ + l];
+    return v;
+  }
+
+  // The sampling observer and the step observer of the driver, at the state x after an accepted
+  // step from t_old (or at t0, with t_old = t).
+  void notify(std::size_t l, double t_old, const State& x) {
     LaneRun& r = lanes_[l];
-    const State& x = r.out.state;
     if (obs_.times != nullptr && obs_.sample) {
       const OutputTimes& times = *obs_.times;
       for (; r.sample < times.size() && dir_ * (times[r.sample] - r.t) <= 0; ++r.sample) {
@@ -198,7 +220,7 @@ class BatchRun {
       r.t = t0_;
       r.out.t = t0_;
       r.out.state = states_[p];
-      if (!tangent_) notify(l, t0_);
+      if (!tangent_) notify(l, t0_, states_[p]);
       if (span_ == 0.0) {
         outcomes_[p] = r.out;
         continue;
@@ -222,7 +244,9 @@ class BatchRun {
     }
   }
 
+  // The lane's outcome, its state the lane's (the last accepted trial, or the start).
   void finish(std::size_t l) {
+    lanes_[l].out.state = lane_of(x_, l);
     outcomes_[lanes_[l].point] = lanes_[l].out;
     refill(l);
   }
@@ -269,17 +293,15 @@ class BatchRun {
     return true;
   }
 
-  // The rest of try_step and of the driver's loop with the lane's trial state.
-  void accept(std::size_t l) {
+  // The rest of try_step and of the driver's loop once the kernel has written the lane's trial
+  // state over its state where it is finite (`written`; the tangent vector's trial in v_trial_,
+  // where the state was not written unless the vector is finite too).
+  void accept(std::size_t l, bool written) {
     LaneRun& r = lanes_[l];
-    const State trial = lane_of(trial_, l);
     const double t_trial = r.t + r.h;
-    TangentVector v = TangentVector::Zero();
-    if (tangent_) {
-      for (std::size_t c = 0; c < 6; ++c) v[static_cast<Eigen::Index>(c)] = v_trial_[c * L_ + l];
+    if (tangent_)
       r.dt = r.h < 0 ? -r.h_max : r.h_max;  // the tangent stepper's: the step at the start
-    }
-    if (!is_finite(trial) || (tangent_ && !v.allFinite())) {
+    if (!written) {                         // the state or the vector is not finite
       r.dt = kNonFiniteShrink * r.dt_tried;
       ++r.out.rejected;
       r.next = LaneRun::Next::retry;
@@ -289,14 +311,13 @@ class BatchRun {
     r.t = r.last ? t1_ : t_trial;
     ++r.out.steps;
     r.out.t = r.t;
-    r.out.state = trial;
     r.out.last_step = r.dt_tried;
-    for (std::size_t c = 0; c < 6; ++c) x_[c * L_ + l] = trial_[c * L_ + l];
     if (tangent_) {
-      (*tangent_)(r.point, r.t, trial, v);
+      TangentVector v = tangent_trial(l);
+      (*tangent_)(r.point, r.t, lane_of(x_, l), v);
       for (std::size_t c = 0; c < 6; ++c) v_[c * L_ + l] = v[static_cast<Eigen::Index>(c)];
-    } else {
-      notify(l, t_old);
+    } else if (obs_.step || (obs_.times != nullptr && obs_.sample)) {
+      notify(l, t_old, lane_of(x_, l));
     }
     r.next = LaneRun::Next::after_step;
     if (!(dir_ * (t1_ - r.t) > 0)) finish(l);
@@ -315,9 +336,9 @@ class BatchRun {
   std::vector<LaneRun> lanes_;
   std::vector<Outcome> outcomes_;
   std::size_t next_ = 0;
-  double *consts_ = nullptr, *x_ = nullptr, *trial_ = nullptr, *h_ = nullptr, *series_ = nullptr;
+  double *consts_ = nullptr, *x_ = nullptr, *h_ = nullptr, *series_ = nullptr;
   double *v_ = nullptr, *v_trial_ = nullptr, *tangent_series_ = nullptr;
-  double *norms_ = nullptr, *tangent_norms_ = nullptr;
+  double *norms_ = nullptr, *tangent_norms_ = nullptr, *steps_ = nullptr, *tangent_steps_ = nullptr;
 };
 
 }  // namespace newtop::detail::taylor_ensemble_run

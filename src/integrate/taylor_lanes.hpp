@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "newtop/integrate/taylor.hpp"
+#include "taylor_math.hpp"
 
 namespace newtop::detail::taylor_lanes {
 
@@ -110,20 +111,31 @@ inline double pair_norm(const Lanes& m, const Lanes& gamma) {
   return nan_max(norm_inf(m, 3), norm_inf(gamma, 3));
 }
 
+/// Whether a norm is finite and nonzero (the case of regular_step).
+inline bool regular_norm(double c) {
+  return c > 0.0 && c < std::numeric_limits<double>::infinity();
+}
+
 /// The step of a series of order p from the norms of its coefficients, norm(n) for n = 0..p:
 /// min over n = p − 1, p of (ε / norm(n))^(1/n), ε = max(abs_tol, rel_tol norm(0)), times Jorba and
 /// Zou's safety factor exp(−0.7/(p − 1)); if both vanish, the highest order that does not; none:
-/// +inf (a constant solution); NaN for a series that is not finite.
+/// +inf (a constant solution); NaN for a series that is not finite. The powers as 2^(log2 …) with
+/// the step rule's own step_log2 and step_exp2 (taylor_math.hpp); where the norms p − 1 and p are
+/// finite and nonzero, regular_step's operations, which the ensemble's lanes repeat.
 template <class Norm>
 double step_from_norms(int p, Norm&& norm, double abs_tol, double rel_tol) {
-  const double log_eps = std::log(std::max(abs_tol, rel_tol * norm(0)));
+  const double c_0 = norm(0), c_p = norm(p), c_q = norm(p - 1);
+  if (regular_norm(c_p) && regular_norm(c_q)) {
+    return taylor_math::regular_step(c_0, c_q, c_p, abs_tol, rel_tol, p);
+  }
+  const double log_eps = taylor_math::step_log2(std::max(abs_tol, rel_tol * c_0));
   double log_h = std::numeric_limits<double>::infinity();
   for (int n = p; n >= 1 && (n >= p - 1 || log_h == std::numeric_limits<double>::infinity()); --n) {
-    const double c = norm(n);
+    const double c = n == p ? c_p : n == p - 1 ? c_q : norm(n);
     if (std::isnan(c) || std::isinf(c)) return std::numeric_limits<double>::quiet_NaN();
-    if (c > 0.0) log_h = std::min(log_h, (log_eps - std::log(c)) / n);
+    if (c > 0.0) log_h = std::min(log_h, (log_eps - taylor_math::step_log2(c)) / n);
   }
-  return std::exp(log_h - 0.7 / (p - 1));
+  return taylor_math::step_exp2(log_h - taylor_math::kSafetyLog2 / (p - 1));
 }
 
 /// The series with coefficients (m^[n], γ^[n]), n = 0..order, summed at h.

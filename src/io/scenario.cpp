@@ -108,11 +108,11 @@ Body body_of_model(const MassModelSection& mm, const toml::table& section, const
 }
 
 /// The model of the run. With a mass model, the factories derive the body from it again (the same
-/// body_of as body_value, already checked): the rotor is the one thing [body] adds.
+/// body_of as body_value, already checked): the rotor is the one thing [body] adds, `k` as given
+/// in [body] (the user's frame, as body_of takes it; body_value's is in the principal axes).
 Model run_model(const MassModelSection& mm, const Body& body_value, const FieldSection& field,
-                const CentreSection& c) {
+                const CentreSection& c, const Vec3& k) {
   if (!mm.model) return Model(body_value, field.field);
-  const Vec3& k = body_value.gyrostat();
   switch (c.kind) {
     case FieldKind::exact:
       return Model::exact(mm.model, c.mu, c.R, k);
@@ -234,7 +234,13 @@ Scenario parse_scenario(const std::string& text, const std::string& source) {
   const State x0 = read_initial(initial, checked.body, attitude);
   check_magnitudes(checked, x0, field, body_source(body_table, mm_table ? &mm : nullptr), doc,
                    source);
-  Scenario s{source, run_model(mm, body_value, field, centre), x0, attitude, {}, {}, input_files};
+  // [body] gyrostat as written (the user's frame), for the factories of a mass model's field.
+  const Vec3 k = mm.model && body_table ? TableReader(*body_table, source, "body")
+                                              .optional_vec3("gyrostat")
+                                              .value_or(Vec3::Zero())
+                                        : Vec3::Zero();
+  Scenario s{source,     run_model(mm, body_value, field, centre, k), x0, attitude, {}, {},
+             input_files};
   if (const toml::table* t = section("integrate", false)) {
     TableReader r(*t, source, "integrate");
     s.integrate = read_integrate(r);

@@ -114,15 +114,24 @@ double true_anomaly_at(const EllipticOrbit& o, double t) {
   const double e = o.eccentricity;
   const double E0 = eccentric_anomaly(e, o.true_anomaly0);
   const double M = E0 - e * std::sin(E0) + o.mean_motion * t;
-  // Kepler's equation E − e sin E = M has its root in [M − e, M + e]; Newton safeguarded by it.
+  if (!std::isfinite(M)) {
+    throw InputError("t: expected a time whose mean anomaly n*t is finite, found t = " +
+                     format_number(t));
+  }
+  // Whole turns apart: Kepler's equation is solved for the mean anomaly Mr ∈ [−π, π], so that the
+  // bracket [Mr − e, Mr + e] stays an interval however large n t is, and ν = 2πk + νr.
+  const double turns = std::round(M / kTwoPi);
+  const double Mr = M - kTwoPi * turns;
+  // Kepler's equation E − e sin E = Mr has its root in [Mr − e, Mr + e]; Newton safeguarded by it.
   auto f = [&](double E) {
-    return std::make_tuple(E - e * std::sin(E) - M, 1.0 - e * std::cos(E));
+    return std::make_tuple(E - e * std::sin(E) - Mr, 1.0 - e * std::cos(E));
   };
   std::uintmax_t iterations = 100;
   const double E =
-      e == 0.0 ? M : boost::math::tools::newton_raphson_iterate(f, M, M - e, M + e, 52, iterations);
+      e == 0.0 ? Mr
+               : boost::math::tools::newton_raphson_iterate(f, Mr, Mr - e, Mr + e, 52, iterations);
   const double b = half_parameter(e);
-  return E + 2.0 * std::atan(b * std::sin(E) / (1.0 - b * std::cos(E)));
+  return kTwoPi * turns + (E + 2.0 * std::atan(b * std::sin(E) / (1.0 - b * std::cos(E))));
 }
 
 namespace {

@@ -1,6 +1,6 @@
 // The chaos indicators of many starts through the Taylor ensemble's tangent runs
-// (newtop/phase/chaos_ensemble.hpp): the observer of chaos_run (ChaosIndicators renormalising the
-// vector after every step) per trajectory.
+// (newtop/phase/chaos_ensemble.hpp): the observer of phase::chaos (ChaosIndicators renormalising
+// the vector after every step) per trajectory.
 
 #include "newtop/phase/chaos_ensemble.hpp"
 

@@ -206,8 +206,8 @@ void run_taylor_group(const SweepFile& s, const Group& g,
 }
 
 /// A group of Taylor tangent runs (megno, lyapunov_max) through the Taylor ensemble with one
-/// tangent vector per point, each the bits of chaos_run's run with TangentTaylorStepper: the same
-/// start vector, the indicators observed (and the vector renormalised) after every step.
+/// tangent vector per point, each the bits of phase::chaos's run with TangentTaylorStepper: the
+/// same start vector, the indicators observed (and the vector renormalised) after every step.
 void run_taylor_tangent_group(const SweepFile& s, const Group& g,
                               std::vector<std::optional<PointResult>>& out) {
   const RunKey& k = g.key;

@@ -180,7 +180,9 @@ PointResult evaluate_point(const SweepFile& s, std::size_t index) {
     const double t1 = io::resolve_t_end(sc, s.integrate);
     IntegrateOptions options;
     if (sc.integrate.max_steps) options.max_steps = *sc.integrate.max_steps;
-    chaos = phase::chaos_run(method, sc.model, sc.initial, sc.integrate.t0, t1, options, false);
+    chaos =
+        phase::chaos(sc.model, sc.initial,
+                     {.method = method, .t0 = sc.integrate.t0, .t_end = t1, .options = options});
     if (chaos->outcome.status != Status::finished) {
       return {std::string(to_string(chaos->outcome.status)), {}};
     }

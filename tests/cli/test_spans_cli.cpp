@@ -253,4 +253,20 @@ TEST(SpansCli, QuietSilencesWarnings) {
   }
 }
 
+// Times beyond double precision: an elliptic orbit far in time runs (Kepler's equation is solved on
+// the mean anomaly reduced by whole turns); Brun's closed form refuses a time whose phase has no
+// digit left, in one line naming `times`, before any work.
+TEST(SpansCli, TimesBeyondDoublePrecision) {
+  for (const char* name : {"orbit_elliptic_pitch.toml", "orbit_spin_orbit.toml"}) {
+    const CliResult r = run("simulate " + example(name) + " --t-end 1e17 --step 1e16 --json");
+    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << name << r.err;
+    EXPECT_NE(r.code, 2) << name << r.err;
+  }
+  const CliResult r = run("analytic " + example("analytic_brun.toml") + " --times 1,1e17 --json");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  ASSERT_EQ(lines(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("times: expected"), std::string::npos) << r.err;
+}
+
 }  // namespace

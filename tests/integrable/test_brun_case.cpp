@@ -183,4 +183,23 @@ TEST(BrunCase, ReproducesEulerPoinsotAsLambdaVanishes) {
 }
 
 }  // namespace
+// Beyond 2^53 a phase has no digit of its angle left: the inversion refuses the time in one line
+// naming `times` (an input error, before any work) instead of failing inside a bracket.
+TEST(BrunCase, RefusesTimesBeyondDoublePrecisionOfThePhase) {
+  const Vec3 I(1.0, 1.5, 2.2);
+  const QuadraticModel model{Body::from_principal(I, 1.0, Vec3::Zero()),
+                             QuadraticField::coulomb(0.0, 0.3)};
+  const Vec3 g = Vec3(0.0, 0.6, 0.8);
+  const Vec3 m0 = I.cwiseProduct(Vec3(0.3, 0.4, 1.1));
+  const BrunCase b = brun_case(model, State{m0 - m0.dot(g) * g, g});  // on the level f = 0
+  EXPECT_NO_THROW(brun_state(b, 1e6));
+  try {
+    brun_state(b, 1e17);
+    ADD_FAILURE() << "t = 1e17 accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("times: expected", 0), 0u) << e.what();
+  }
+  EXPECT_THROW(brun_check_time(b, std::nan("")), InputError);
+}
+
 }  // namespace newtop

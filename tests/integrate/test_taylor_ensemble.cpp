@@ -66,6 +66,7 @@ struct Runs {
   std::vector<QuadraticModel> models;  // one, or one per state
   std::vector<State> states;
   double tol = 1e-10, t0 = 0.0, t1 = 6.0;
+  int order = 0;  // the tolerance's
   IntegrateOptions options;
 };
 
@@ -76,7 +77,7 @@ const QuadraticModel& model_of(const Runs& r, std::size_t i) {
 std::vector<Record> scalar_runs(const Runs& r, const OutputTimes& times) {
   std::vector<Record> rec(r.states.size());
   for (std::size_t i = 0; i < r.states.size(); ++i) {
-    TaylorStepper s(r.tol, r.tol);
+    TaylorStepper s(r.tol, r.tol, r.order);
     Record& x = rec[i];
     x.out = integrate_sampled(
         s, model_of(r, i), r.states[i], r.t0, r.t1, times, r.options,
@@ -94,7 +95,7 @@ std::vector<Record> ensemble_runs(const Runs& r, const OutputTimes& times, SimdP
   obs.sample = [&](std::size_t p, std::int64_t, double t, const State& y) {
     rec[p].samples.emplace_back(t, y);
   };
-  TaylorEnsemble e(r.tol, r.tol, path);
+  TaylorEnsemble e(r.tol, r.tol, path, r.order);
   const std::vector<Outcome> out = e.integrate(r.models, r.states, r.t0, r.t1, r.options, obs);
   for (std::size_t i = 0; i < out.size(); ++i) rec[i].out = out[i];
   return rec;
@@ -155,6 +156,16 @@ TEST(TaylorEnsemble, BitIdenticalWhereRunsStopEarly) {
   expect_scalar_agreement(underflow, "underflow");
 }
 
+// An order given (as TaylorStepper takes one): the scalar run of that order, bit for bit.
+TEST(TaylorEnsemble, BitIdenticalAtAGivenOrder) {
+  for (int order : {6, 12, 25}) {
+    Runs r = random_runs(9, true, 1e-10, 31);
+    r.order = order;
+    expect_scalar_agreement(r, "order " + std::to_string(order));
+    EXPECT_EQ(TaylorEnsemble(1e-10, 1e-10, best_simd_path(), order).order(), order);
+  }
+}
+
 TEST(TaylorEnsemble, BitIdenticalWhereSeriesAreNotFinite) {
   // m of 1e160 among ordinary points: the products of the recurrences overflow, the series is not
   // finite, every trial from the given first step on is rejected and retried 5× shorter until the
@@ -196,6 +207,8 @@ TEST(TaylorEnsemble, RefusesBadInputBeforeAnyWork) {
   EXPECT_THROW(e.integrate(r.models, bad, 0.0, 1.0), InputError);
   EXPECT_THROW(e.integrate(r.models, r.states, 0.0, INFINITY), InputError);
   EXPECT_THROW(TaylorEnsemble(0.0, 1e-10), InputError);
+  EXPECT_THROW(TaylorEnsemble(1e-10, 1e-10, best_simd_path(), 41), InputError);
+  EXPECT_THROW(TaylorEnsemble(1e-10, 1e-10, best_simd_path(), 1), InputError);
 }
 
 }  // namespace

@@ -56,7 +56,7 @@ TEST(StateChecks, RunMethodRefusesANonUnitGamma) {
 TEST(StateChecks, ChaosAndSectionRefuseANonUnitGamma) {
   const State x{Vec3(0.1, 0.2, 0.3), Vec3(0, 0.6, 0.9)};  // |γ| = 1.0816…
   const std::string chaos = refusal([&] {
-    phase::chaos_run({"splitting6", 0.01}, model(), x, 0, 1, {}, false);
+    phase::chaos(model(), x, {.method = {"splitting6", 0.01}, .t_end = 1});
   });
   EXPECT_EQ(
       chaos.rfind("gamma: expected a unit vector (|gamma| = 1 to 1e-12), found |gamma| = 1.08", 0),

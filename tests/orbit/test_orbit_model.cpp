@@ -6,6 +6,7 @@
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "inertial_reference.hpp"
@@ -164,6 +165,32 @@ TEST(Kepler, ElapsedTimeIsTheIntegralOfTimePerAnomaly) {
     for (double t : {0.0, 0.7, 5.0, 31.0, -4.0}) {
       EXPECT_NEAR(elapsed_time(o, 0.3, true_anomaly_at(o, t)), t, kKeplerTime * (1 + std::abs(t)));
     }
+  }
+}
+
+// Far from t = 0 the mean anomaly is reduced by whole turns before Kepler's equation is solved:
+// ν(t + kT) = ν(t) + 2πk up to the rounding of the larger number (|ν| ulps, i.e. 4 eps |ν|
+// with the reduction's and the sum's roundings), and a time whose n t is beyond double precision
+// (1e17) still gives a finite angle instead of an empty bracket.
+constexpr double kTurnsUlps = 4.0;
+
+TEST(Kepler, WholeTurnsAreReducedBeforeTheSolve) {
+  for (double e : {0.0, 0.1, 0.6}) {
+    const EllipticOrbit o = EllipticOrbit::from_mean_motion(0.8, e, 0.3);
+    const double T = 2 * std::numbers::pi / 0.8;
+    for (double k : {1.0, 1e3, 1e6}) {
+      for (double t : {0.4, 2.0, 6.5}) {
+        const double far = true_anomaly_at(o, t + k * T);
+        const double want = true_anomaly_at(o, t) + 2 * std::numbers::pi * k;
+        // t + kT itself is rounded: its error moves ν by at most σ⁻¹ ulp(t + kT) (rate ≤
+        // n(1+e)²/(1−e²)^1.5).
+        const double rate = 0.8 * (1 + e) * (1 + e) / std::pow(1 - e * e, 1.5);
+        const double tol = kTurnsUlps * std::numeric_limits<double>::epsilon() *
+                           (std::abs(want) + rate * (t + k * T));
+        EXPECT_NEAR(far, want, tol) << e << " " << k << " " << t;
+      }
+    }
+    EXPECT_TRUE(std::isfinite(true_anomaly_at(o, 1e17))) << e;
   }
 }
 

@@ -25,7 +25,7 @@ MethodSettings fixed(const std::string& name, double h) {
 template <Field F>
 phase::ChaosSample indicators(const BasicModel<F>& model, const State& x0, double T,
                               const MethodSettings& m, bool spectrum = false) {
-  return phase::chaos_run(m, model, x0, 0.0, T, IntegrateOptions{}, spectrum).indicators;
+  return phase::chaos(model, x0, {.method = m, .t_end = T, .spectrum = spectrum}).indicators;
 }
 
 QuadraticModel euler_poinsot() {
@@ -132,7 +132,7 @@ TEST(Chaos, SpectrumComesInPairsWithZeroTotal) {
   const double T = 1000.0, h = 0.02;
   const std::int64_t n = fixed_step_count(0.0, T, h);
   const phase::ChaosResult r =
-      phase::chaos_run(fixed("splitting6", h), model, x0, 0.0, T, IntegrateOptions{}, true);
+      phase::chaos(model, x0, {.method = fixed("splitting6", h), .t_end = T, .spectrum = true});
   const auto& sp = *r.indicators.spectrum;
   double total = 0;
   for (double v : sp) total += v;
@@ -144,18 +144,49 @@ TEST(Chaos, SpectrumComesInPairsWithZeroTotal) {
   EXPECT_DOUBLE_EQ(sp[0], r.indicators.lyapunov_max);
 }
 
-// The history: a sample every `every` steps and the last; the indicators' last sample is the
-// result.
+// The history: at most history_rows samples of a fixed-step run, one every ⌈n / rows⌉ steps and
+// the last; every step without a limit; the indicators' last sample is the result.
 TEST(Chaos, HistorySamplesTheRun) {
   const QuadraticModel model = test::generic_model();
   std::vector<phase::ChaosSample> history;
-  const phase::ChaosResult r = phase::chaos_run(
-      fixed("splitting4", 0.1), model, test::generic_state(model), 0.0, 10.0, IntegrateOptions{},
-      false, [&](const phase::ChaosSample& s) { history.push_back(s); }, 30);
-  ASSERT_EQ(history.size(), 4u);  // steps 30, 60, 90 and the last (100)
-  EXPECT_DOUBLE_EQ(history[0].t, 3.0);
+  phase::ChaosRequest request{.method = fixed("splitting4", 0.1), .t_end = 10.0};
+  request.history = [&](const phase::ChaosSample& s) { history.push_back(s); };
+  request.history_rows = 3;  // 100 steps: every 34th, then the last
+  const phase::ChaosResult r = phase::chaos(model, test::generic_state(model), request);
+  ASSERT_EQ(history.size(), 3u);  // steps 34, 68 and the last (100)
+  EXPECT_DOUBLE_EQ(history[0].t, 3.4);
+  EXPECT_DOUBLE_EQ(history[1].t, 6.8);
   EXPECT_EQ(history.back().t, 10.0);
   EXPECT_EQ(history.back().megno, r.indicators.megno);
+  history.clear();
+  request.history_rows = 0;
+  phase::chaos(model, test::generic_state(model), request);
+  EXPECT_EQ(history.size(), 100u);
+}
+
+// The request is checked before any work, with the command line's words: a run of no length, a
+// method without a tangent map, a negative history limit; the state on a Model.
+TEST(Chaos, RequestIsCheckedBeforeAnyWork) {
+  const Model model(test::generic_model());
+  const State x0 = test::generic_state(test::generic_model());
+  auto refusal = [&](const phase::ChaosRequest& r, const State& x) {
+    try {
+      phase::chaos(model, x, r);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const MethodSettings m = fixed("splitting6", 0.01);
+  EXPECT_EQ(refusal({.method = m, .t0 = 2.0, .t_end = 2.0}, x0),
+            "t_end: expected a time different from t0 = 2, found 2 (a run of no length)");
+  EXPECT_EQ(refusal({.method = m, .t_end = 1.0, .history_rows = -1}, x0),
+            "history_rows: expected a count >= 0, found -1");
+  EXPECT_EQ(refusal({.method = fixed("splitting6", 0.0), .t_end = 1.0}, x0).rfind("step: ", 0), 0u);
+  EXPECT_EQ(refusal({.t_end = 1.0}, x0).rfind("step: ", 0), 0u);  // no method given
+  EXPECT_EQ(refusal({.method = m, .t_end = 1.0}, State{x0.m, 2.0 * x0.gamma}).rfind("gamma: ", 0),
+            0u);
+  EXPECT_EQ(refusal({.method = m, .t_end = 1.0}, x0), "accepted");
 }
 
 // The backward flow: without a gyrostat the equations are reversible, R(m, γ) = (−m, γ) maps the
@@ -172,8 +203,10 @@ TEST(Chaos, BackwardRunGivesTheIndicatorsOfTheBackwardFlow) {
   const State rx0{-x0.m, x0.gamma};
   const double T = 60.0;
   const MethodSettings m = fixed("splitting6", 0.02);
-  const phase::ChaosResult back = phase::chaos_run(m, model, x0, 0.0, -T, IntegrateOptions{}, true);
-  const phase::ChaosResult fwd = phase::chaos_run(m, model, rx0, 0.0, T, IntegrateOptions{}, true);
+  const phase::ChaosResult back =
+      phase::chaos(model, x0, {.method = m, .t_end = -T, .spectrum = true});
+  const phase::ChaosResult fwd =
+      phase::chaos(model, rx0, {.method = m, .t_end = T, .spectrum = true});
   ASSERT_EQ(back.outcome.status, Status::finished);
   ASSERT_EQ(back.outcome.t, -T);
   const phase::ChaosSample& b = back.indicators;

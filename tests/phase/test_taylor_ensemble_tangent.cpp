@@ -1,5 +1,5 @@
 // The chaos indicators of many starts through the Taylor ensemble's tangent runs
-// (taylor_chaos_ensemble) against newtop chaos's scalar run of each point (chaos_run with method
+// (taylor_chaos_ensemble) against newtop chaos's scalar run of each point (phase::chaos with method
 // taylor and one tangent vector): the same Outcome and the same MEGNO, λ_max and FLI,
 // bit for bit, for batches of 1, 3, 8 and 17 points, a model per point, on every instruction set.
 
@@ -36,8 +36,9 @@ TEST(TaylorEnsembleTangent, IndicatorsAreChaosRunsBitsForEveryBatchSize) {
       const std::vector<phase::ChaosResult> got =
           phase::taylor_chaos_ensemble(models, x, 0.0, kT, kTol, kTol, {}, path);
       for (std::size_t i = 0; i < n; ++i) {
-        const phase::ChaosResult ref = phase::chaos_run(MethodSettings("taylor", 0.0, kTol, kTol),
-                                                        Model(models[i]), x[i], 0.0, kT, {}, false);
+        const phase::ChaosResult ref =
+            phase::chaos(Model(models[i]), x[i],
+                         {.method = MethodSettings("taylor", 0.0, kTol, kTol), .t_end = kT});
         const std::string what = "n " + std::to_string(n) + ", " +
                                  std::string(simd_path_name(path)) + ", point " + std::to_string(i);
         ASSERT_EQ(got[i].outcome.status, ref.outcome.status) << what;

@@ -60,7 +60,12 @@ std::array<double, 2> brun_abel_sums(const BrunCase& b, const std::array<double,
 /// The unwrapped angles φ_s(t): U_0 = T0 fixes φ2 as an increasing function of φ1, and U_1
 /// along that curve increases with φ1 (derivative (u2 − u1)/√R̃1): two nested monotone
 /// one-dimensional solves by safeguarded Newton (Boost.Math) inside brackets.
+/// Throws InputError naming `times` for a finite t whose phases ω_s t reach 2^53: no digit of the
+/// angles remains in double precision (and the brackets of 2π no longer separate doubles).
 std::array<double, 2> brun_angles_at(const BrunCase& b, double t);
+
+/// The check of brun_angles_at alone, so that a caller can refuse a list of times before any work.
+void brun_check_time(const BrunCase& b, double t);
 
 /// The state at time t.
 State brun_state(const BrunCase& b, double t);

@@ -70,6 +70,16 @@ struct BrunPrymStateAt {
 };
 BrunPrymStateAt brun_prym_state_at(const BrunPrymSolution& s, double t);
 
+/// The linearisation checked at the start: the initial state's divisor on Γ, the largest
+/// component of |state → divisor → state − state| (m and γ), and the rates of the Abel–Prym sums
+/// along the state's velocity (to be equal to the solution's law, velocity_h).
+struct BrunPrymCheck {
+  BrunPrymDivisor divisor{};
+  double round_trip_error = 0;
+  BrunPrymRate rate;
+};
+BrunPrymCheck brun_prym_check(const BrunPrymSolution& s);
+
 /// The state at time t on the level f ≠ 0 of x0 (brun_prym_solution, then brun_prym_state_at;
 /// for many times build the solution once).
 State brun_state_at(const QuadraticModel& model, const State& x0, double t);

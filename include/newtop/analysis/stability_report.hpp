@@ -39,15 +39,33 @@ std::optional<int> spin_axis_of(const QuadraticModel& model, const State& s);
 StabilityReport stability_report(const Model& model, const State& state,
                                  const PolishedFixedPoint& polish, std::optional<int> axis);
 
+/// Why stability_of_equilibrium or stability_of_state found no fixed point to analyse: what()
+/// is the library's message; the fields let a caller word it for its own options.
+class StabilityChoiceError : public InputError {
+ public:
+  enum class Reason {
+    no_equilibrium,     ///< the model has no isolated equilibrium
+    equilibrium_index,  ///< k is not in 1 … count
+    not_fixed_point,    ///< the state given is not a fixed point to three digits
+  };
+  StabilityChoiceError(Reason why, const std::string& message) : InputError(message), reason(why) {}
+  Reason reason;
+  int count = 0;                   ///< the number of isolated equilibria
+  bool every_orientation = false;  ///< every orientation is an equilibrium
+  PolishedFixedPoint polish;       ///< Newton's polish that failed (not_fixed_point)
+};
+
 /// The spin about principal axis `axis` (0, 1, 2) at rate Ω, pointing at the centre. Throws
 /// InputError ("axis: ...") on a field other than the quadratic one or when M g r0 is not along
 /// the axis.
 StabilityReport stability_of_axis(const Model& model, int axis, double Omega);
-/// The k-th (1-based) isolated equilibrium of find_equilibria, at rest. Throws InputError
-/// ("equilibrium: ...") when there is none such.
+/// The k-th (1-based) isolated equilibrium of find_equilibria, at rest. Throws
+/// StabilityChoiceError ("equilibrium: ...") when there is none such, or when Newton's polish of
+/// it fails.
 StabilityReport stability_of_equilibrium(const Model& model, int k);
 /// A state given to a few digits, polished by Newton's method (polish_fixed_point). Throws
-/// InputError ("state: ...") when it is not a fixed point to three digits.
+/// StabilityChoiceError ("state: ...", not_fixed_point) when it is not a fixed point to three
+/// digits, InputError for a state that is not valid.
 StabilityReport stability_of_state(const Model& model, const State& s);
 
 /// The polish's failure in words: "found residual R of d(m, gamma)/dt, and ..." (the command

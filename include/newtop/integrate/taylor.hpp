@@ -58,7 +58,17 @@ State taylor_state(const TaylorSeries& s, double h);
 Quaternion taylor_attitude(const TaylorSeries& s, double h);
 /// The step: min over n = p − 1, p of (ε / ‖x^[n]‖∞)^(1/n), times Jorba and Zou's safety factor
 /// exp(−0.7/(p − 1)), with ε = max(abs_tol, rel_tol ‖x^[0]‖∞); +inf when the series is constant.
+/// The powers through taylor_step_log2 and taylor_step_exp2 (below).
 double taylor_step(const TaylorSeries& s, double abs_tol, double rel_tol);
+/// The logarithm to base 2 and the power of two of the step rule (src/integrate/taylor_math.hpp):
+/// newtop's own, the same bits in a scalar run and in every lane of an ensemble. Error bounds in
+/// units in the last place of the result, for finite x > 0 and for normal results: the roundings
+/// of the leading terms ((m − 1)/(m + 1), 2/ln 2 and the products: four) for the logarithm, those
+/// of the sum's last additions and of the reduction's powers of two (two) for the power.
+inline constexpr double kTaylorStepLog2Ulps = 4.0;
+inline constexpr double kTaylorStepExp2Ulps = 2.0;
+double taylor_step_log2(double x);
+double taylor_step_exp2(double y);
 /// The order for a tolerance: ⌈0.6 |ln tol|⌉ + 4 within [8, 30] (docs/methods.md, "Taylor").
 int taylor_order(double tol);
 

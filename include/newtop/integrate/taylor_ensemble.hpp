@@ -11,8 +11,9 @@
 /// the adaptive driver (driver.hpp, sampled.hpp) running TaylorStepper(abs_tol, rel_tol) on that
 /// trajectory alone, whatever its lane, the batch size or the instruction set. Each lane performs
 /// the scalar recurrences' operations (taylor.cpp) in the same order on its own numbers, without
-/// fused multiply-adds, and each lane's step, acceptance and end are the driver's, decided by the
-/// same scalar code (tests/integrate/test_taylor_ensemble.cpp checks it).
+/// fused multiply-adds, and the step rule's (newtop's own log2 and exp2, taylor_step_log2 and
+/// taylor_step_exp2); each lane's step, acceptance and end are the driver's, decided by the same
+/// scalar code (tests/integrate/test_taylor_ensemble.cpp checks it).
 
 #include <cstddef>
 #include <cstdint>
@@ -53,8 +54,10 @@ using TaylorTangentObserver =
 /// Holds a workspace: one ensemble per thread.
 class TaylorEnsemble {
  public:
-  /// Throws InputError as TaylorStepper does for the tolerances, and if the path is not available.
-  TaylorEnsemble(double abs_tol, double rel_tol, SimdPath path = best_simd_path());
+  /// Throws InputError as TaylorStepper does for the tolerances and the order, and if the path is
+  /// not available. `order`: as TaylorStepper's (0: taylor_order of the smaller tolerance); the
+  /// guarantee holds against TaylorStepper(abs_tol, rel_tol, order).
+  TaylorEnsemble(double abs_tol, double rel_tol, SimdPath path = best_simd_path(), int order = 0);
 
   int order() const { return order_; }
   SimdPath path() const { return path_; }

@@ -25,7 +25,7 @@ void check_unit_gamma(const Vec3& gamma);
 Vec3 normalized_gamma(const Vec3& gamma);
 
 /// Checks a state where a run or an analysis starts: m finite ("m: expected finite numbers, found
-/// [..]") and γ as check_unit_gamma. Every compiled entry point (run_method, chaos_run,
+/// [..]") and γ as check_unit_gamma. Every compiled entry point (run_method, phase::chaos,
 /// section_orbit, the analyses on a Model) calls it, so the library refuses what the command line
 /// refuses, with the same words.
 void validate(const State& x);

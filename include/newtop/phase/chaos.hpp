@@ -5,7 +5,8 @@
 /// fast Lyapunov indicator. The tangent run is driven like a fixed-step run of the driver (n equal
 /// steps landing on t1); the indicators are an observer of it, called after every step with the
 /// time, the state and the tangent vectors, which it renormalises. Declarations only; the tangent
-/// runs on a BasicModel<F> are templates in chaos_run.hpp.
+/// runs on a BasicModel<F> are templates in chaos_run.hpp. The entry point is
+/// chaos(model, x0, ChaosRequest) -> ChaosResult.
 
 #include <array>
 #include <cstdint>
@@ -68,13 +69,39 @@ struct ChaosResult {
   ChaosSample indicators;
 };
 
-/// The indicators of the orbit from (t0, x0) to t1 with the named method; `history`
-/// receives a sample every `every` steps (and the last), `on_step(t)` is called after each step.
-/// Compiled once for every field.
-ChaosResult chaos_run(const MethodSettings& method, const Model& model, const State& x0, double t0,
-                      double t1, IntegrateOptions options, bool spectrum,
-                      const std::function<void(const ChaosSample&)>& history = {},
-                      std::int64_t every = 1, const std::function<void(double)>& on_step = {});
+/// Everything a chaos run of one start needs (docs/chaos.md).
+struct ChaosRequest {
+  /// A method with a tangent map (check_tangent_method): a splitting composition of the axes or
+  /// spin split with its step, rk4 with its step, or an adaptive method with its tolerances.
+  MethodSettings method{};
+  double t0 = 0.0;
+  /// The end of the run (≠ t0; below t0: the indicators of the backward flow).
+  double t_end = 0.0;
+  /// The full spectrum (Benettin's QR on 6 vectors) besides λ_max, MEGNO and the FLI (one vector).
+  bool spectrum = false;
+  IntegrateOptions options{};  ///< max_steps, min_step_factor (the step is the method's)
+  /// Receives the indicators after every step, or every k-th step with history_rows (and the
+  /// last sample in any case).
+  std::function<void(const ChaosSample&)> history{};
+  /// At most this many samples of a fixed-step run of n steps: one every ⌈n / history_rows⌉ steps
+  /// (and the last). 0: every step. An adaptive run is sampled at every accepted step.
+  std::int64_t history_rows = 0;
+  /// Called after every step with the time (throws to stop the run).
+  std::function<void(double)> on_step{};
+};
+
+/// Throws InputError for a request no run can use, before any work: a method without a tangent
+/// map or with a bad step or tolerance, non-finite times, a run of no length (t_end = t0), options
+/// no run can use, history_rows < 0.
+void check_chaos_request(const ChaosRequest& request);
+
+/// The number of steps between two history samples of the request's run (history_rows).
+std::int64_t history_interval(const ChaosRequest& request);
+
+/// The indicators of the trajectory from (request.t0, x0) to request.t_end (InputError for a state
+/// or request that is not valid, before any work). Compiled once for every field; chaos_run.hpp
+/// holds the template on a BasicModel<F>.
+ChaosResult chaos(const Model& model, const State& x0, const ChaosRequest& request);
 
 /// Benettin's two-trajectory estimate of λ_max (chaos_run.hpp), compiled once for every field.
 double two_trajectory_lyapunov(const MethodSettings& method, const Model& model, const State& x0,

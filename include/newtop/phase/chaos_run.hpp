@@ -136,16 +136,20 @@ Outcome integrate_tangent_adaptive(S& stepper, const BasicModel<F>& model, State
   return detail::run_tangent(stepper, model, x, V, t0, t1, opt, observer);
 }
 
-/// The indicators of the orbit from (t0, x0) to t1 with the named method; `history`
-/// receives a sample every `every` steps (and the last), `on_step(t)` is called after each step.
+/// The indicators of the trajectory from (request.t0, x0) to request.t_end (chaos.hpp), on a
+/// BasicModel<F>: the request is checked (check_chaos_request), the state is not (the compiled
+/// chaos on a Model validates it).
 template <Field F>
-ChaosResult chaos_run(const MethodSettings& method, const BasicModel<F>& model, const State& x0,
-                      double t0, double t1, IntegrateOptions options, bool spectrum,
-                      const std::function<void(const ChaosSample&)>& history = {},
-                      std::int64_t every = 1, const std::function<void(double)>& on_step = {}) {
+ChaosResult chaos(const BasicModel<F>& model, const State& x0, const ChaosRequest& request) {
+  check_chaos_request(request);
+  const MethodSettings& method = request.method;
+  IntegrateOptions options = request.options;
   options.step = method.step;
-  const int vectors = spectrum ? 6 : 1;
-  check_tangent_method(method);
+  const double t0 = request.t0, t1 = request.t_end;
+  const int vectors = request.spectrum ? 6 : 1;
+  const std::int64_t every = history_interval(request);
+  const auto& history = request.history;
+  const auto& on_step = request.on_step;
   return with_tangent_stepper(method, [&](auto& s) {
     ChaosIndicators ind(t0, vectors);
     std::int64_t count = 0;

@@ -98,8 +98,8 @@ const char* to_string(SectionStatus s);
 
 /// Everything a section of one start needs.
 struct SectionRequest {
-  MethodSettings method;
-  Surface surface;  ///< parse_surface's result (of ω, m and γ on a body)
+  MethodSettings method{};
+  Surface surface{};  ///< parse_surface's result (of ω, m and γ on a body)
   Direction direction = Direction::up;
   std::int64_t max_crossings = 1000;
   /// The start lies on the surface and is the first crossing (a seeded orbit).
@@ -108,11 +108,11 @@ struct SectionRequest {
   /// None: forward until max_crossings, at most options.max_steps steps (a fixed-step run is
   /// given twice that span, an adaptive one a span of 10^12 whose step-underflow floor stays that
   /// of a run of span 1).
-  std::optional<double> t_end;
-  IntegrateOptions options;  ///< max_steps, min_step_factor (the step is the method's)
-  int orbit = 0;             ///< the label of the crossings
+  std::optional<double> t_end{};
+  IntegrateOptions options{};  ///< max_steps, min_step_factor (the step is the method's)
+  int orbit = 0;               ///< the label of the crossings
   /// Called after every accepted step with the time (throws to stop the run).
-  std::function<void(double)> on_step;
+  std::function<void(double)> on_step{};
 };
 
 /// The section of one start.
