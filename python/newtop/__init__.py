@@ -25,7 +25,8 @@ try:  # the compiled extension, when the build made one (PYTHONPATH=build/python
     from ._newtop import (AnalyticResult, ChaosResult, Equilibria, Section,  # noqa: F401
                           StabilityReport)
     from ._newtop import (DebraDelpDiagram, OrbitModel, OrbitScenario, OrbitState,  # noqa: F401
-                          RelativeEquilibria, RelativeStability, debra_delp)
+                          OrbitChaosResult, OrbitSection, RelativeEquilibria, RelativeStability,
+                          debra_delp)
     from ._newtop import IntegralSearch, RotationFamilies  # noqa: F401
     from .commands import integrals, libration, simulate, view  # noqa: F401
     from .analyses import (analytic, chaos, equilibria, field, find_integrals,  # noqa: F401
@@ -46,5 +47,6 @@ if HAVE_EXTENSION:
                 "integrals", "integrals_at", "integrate", "integrate_ensemble", "chaos_ensemble",
                 "is_orbit_scenario", "libration",
                 "load_scenario", "parse_scenario", "rotations", "section", "simulate", "stability", "sweep",
-                "view", "DebraDelpDiagram", "OrbitModel", "OrbitScenario", "OrbitState",
+                "view", "DebraDelpDiagram", "OrbitChaosResult", "OrbitModel", "OrbitScenario",
+                "OrbitSection", "OrbitState",
                 "RelativeEquilibria", "RelativeStability", "debra_delp"]

@@ -233,6 +233,9 @@ void bind_scenario(py::module_& m) {
       .def_property(
           "tol", [](const io::Scenario& s) { return s.integrate.tol; },
           [](io::Scenario& s, const std::optional<double>& v) { s.integrate.tol = v; })
+      .def_property(
+          "max_steps", [](const io::Scenario& s) { return s.integrate.max_steps; },
+          [](io::Scenario& s, const std::optional<std::int64_t>& v) { s.integrate.max_steps = v; })
       .def_readonly("input_files", &io::Scenario::input_files)
       .def("__repr__", [](const io::Scenario& s) { return "Scenario('" + s.source + "')"; });
   m.def("load_scenario", &io::load_scenario, py::arg("path"),

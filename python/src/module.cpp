@@ -23,4 +23,5 @@ PYBIND11_MODULE(_newtop, m) {
   newtop::python::bind_orbit(m);
   newtop::python::bind_orbit_run(m);
   newtop::python::bind_orbit_analyses(m);
+  newtop::python::bind_orbit_phase(m);
 }

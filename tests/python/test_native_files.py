@@ -1,0 +1,239 @@
+"""The analyses on a scenario file: given a path, or a Scenario read from one, every function in
+newtop's namespace runs the library natively and returns the typed result, the numbers of the
+program's JSON on the same file bit for bit; the orbit's section and chaos likewise; command-line
+options with no native form are refused by name, never ignored.
+
+Run by ctest with NEWTOP_PYTHON_MODULE (build/python) and NEWTOP_EXE set
+(tests/python/CMakeLists.txt)."""
+
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+sys.path.insert(0, os.environ["NEWTOP_PYTHON_MODULE"])
+import newtop  # noqa: E402
+
+EXE = os.environ["NEWTOP_EXE"]
+EXAMPLES = os.path.join(os.path.dirname(__file__), "..", "..", "examples")
+
+
+def example(name):
+    return os.path.join(EXAMPLES, name)
+
+
+def program_json(*words, ok=(0,)):
+    p = subprocess.run([EXE, *words, "--json", "--quiet"], capture_output=True, text=True)
+    assert p.returncode in ok, p.stderr
+    return json.loads(p.stdout)
+
+
+def both(path):
+    """The path itself and the Scenario the library reads from it."""
+    return [path, newtop.load_scenario(path)]
+
+
+def pairs(rows):
+    """[[re, im], ...] of the JSON as a complex array."""
+    return np.array([complex(r[0], r[1]) for r in rows])
+
+
+@pytest.mark.parametrize("form", ["path", "scenario"])
+def test_equilibria_of_a_file(form):
+    path = example("heavy_top.toml")
+    eq = newtop.equilibria(both(path)[form == "scenario"])
+    j = program_json("equilibria", path)
+    assert isinstance(eq, newtop.Equilibria) and eq.count == j["count"] > 0
+    assert np.array_equal(eq.gamma, [e["gamma"] for e in j["equilibria"]])
+    assert np.array_equal(eq.potential, [e["potential"] for e in j["equilibria"]])
+    assert eq.type == [e["type"] for e in j["equilibria"]]
+
+
+@pytest.mark.parametrize("form", ["path", "scenario"])
+def test_stability_of_a_file(form):
+    path = example("stability_beletsky.toml")
+    obj = both(path)[form == "scenario"]
+    for r, j in ((newtop.stability(obj), program_json("stability", path)),
+                 (newtop.stability(obj, axis="z", omega=1.3),
+                  program_json("stability", path, "--axis", "z", "--omega", "1.3"))):
+        assert isinstance(r, newtop.StabilityReport)
+        assert np.array_equal(r.eigenvalues, pairs(j["eigenvalues"]))
+        assert r.max_real_part == j["max_real_part"]
+        assert r.linearly_stable == j["linearly_stable"]
+
+
+@pytest.mark.parametrize("form", ["path", "scenario"])
+def test_chaos_of_a_file_with_the_command_line_overrides(form):
+    path = example("brun.toml")
+    c = newtop.chaos(both(path)[form == "scenario"], t_end=50.0, step=0.01, spectrum=True)
+    j = program_json("chaos", path, "--t-end", "50", "--step", "0.01", "--spectrum")
+    assert isinstance(c, newtop.ChaosResult)
+    assert (c.lyapunov_max, c.megno, c.fli, c.outcome, c.method) == (
+        j["lyapunov_max"], j["megno"], j["fli"], j["outcome"], j["method"])
+    assert np.array_equal(c.spectrum, j["spectrum"])
+    # another split, as --split
+    c = newtop.chaos(path, t_end=20.0, step=0.01, split="spin")
+    j = program_json("chaos", path, "--t-end", "20", "--step", "0.01", "--split", "spin")
+    assert c.megno == j["megno"] and c.lyapunov_max == j["lyapunov_max"]
+
+
+def crossings_equal(s, j):
+    assert s.count == j["count"]
+    assert np.array_equal(s.t, [c["t"] for c in j["crossings"]])
+    assert np.array_equal(s.gamma.reshape(-1, 3), np.reshape([c["gamma"] for c in j["crossings"]],
+                                                            (-1, 3)))
+    assert np.array_equal(s.omega.reshape(-1, 3), np.reshape([c["omega"] for c in j["crossings"]],
+                                                            (-1, 3)))
+    assert s.stopped_by == j["stopped_by"]
+    assert s.max_surface_residual == j["max_surface_residual"]
+
+
+@pytest.mark.parametrize("form", ["path", "scenario"])
+def test_section_of_a_file(form):
+    path = example("brun.toml")
+    obj = both(path)[form == "scenario"]
+    s = newtop.section(obj, surface="gamma1 = 0", crossings=40, t_end=500.0, step=0.01)
+    j = program_json("section", path, "--surface", "gamma1 = 0", "--crossings", "40",
+                     "--t-end", "500", "--step", "0.01")
+    assert isinstance(s, newtop.Section) and s.count > 0
+    crossings_equal(s, j)
+
+
+def test_section_without_t_end_stops_at_its_crossings_and_seeds_orbits(tmp_path):
+    # A scenario with no t_end: each orbit runs until its crossings (at most max_steps steps).
+    text = open(example("brun.toml")).read()
+    sc = newtop.parse_scenario(text)
+    sc.t_end = None
+    path = tmp_path / "no_t_end.toml"
+    lines = [ln for ln in text.splitlines() if not ln.strip().startswith("t_end")]
+    path.write_text("\n".join(lines) + "\n")
+    s = newtop.section(str(path), surface="gamma3 = 0", crossings=25, step=0.01)
+    j = program_json("section", str(path), "--surface", "gamma3 = 0", "--crossings", "25",
+                     "--step", "0.01")
+    assert s.count == 25 and s.stopped_by == "crossings"
+    crossings_equal(s, j)
+    s = newtop.section(str(path), surface="gamma3 = 0", crossings=5, step=0.01, orbits=4)
+    j = program_json("section", str(path), "--surface", "gamma3 = 0", "--crossings", "5",
+                     "--step", "0.01", "--orbits", "4")
+    assert np.array_equal(s.orbit, [c["orbit"] for c in j["crossings"]]) and s.count > 5
+    crossings_equal(s, j)
+
+
+@pytest.mark.parametrize("form", ["path", "scenario"])
+def test_analytic_rotations_find_integrals_of_a_file(form):
+    path = example("heavy_top.toml")
+    obj = both(path)[form == "scenario"]
+    a = newtop.analytic(obj, samples=4, t_end=2.0)
+    j = program_json("analytic", path, "--samples", "4", "--t-end", "2")
+    assert a.case == j["case"]
+    assert np.array_equal(a.t, [x["t"] for x in j["samples"]])
+    assert np.array_equal(a.gamma, [x["analytic"]["gamma"] for x in j["samples"]])
+    assert a.max_abs_error == j["max_abs_error"]
+    r = newtop.rotations(obj, samples=60)
+    j = program_json("rotations", path, "--samples", "60")
+    assert r.any_axis_omega == j["any_axis_omega"] and len(r.cone_gamma) == j["cone_samples"]
+    f = newtop.find_integrals(obj, degree=2)
+    j = program_json("find-integrals", path, "--degree", "2")
+    assert f.rank == j["rank"] and np.array_equal(f.singular_values, j["singular_values"])
+
+
+def test_field_of_a_path_takes_the_scan_as_written():
+    path = example("exact_box_multipole.toml")
+    f = newtop.field(path, [0.3, 0.4, 1.0], scan_R="10:40:6")
+    j = program_json("field", path, "--gamma", "0.3,0.4,1", "--scan-R", "10:40:6")
+    assert f["exact"]["potential"] == j["exact"]["potential"]
+    assert np.array_equal(f["scan"]["moment_error"], j["scan"]["moment_error"])
+
+
+def test_orbit_section_equals_the_program():
+    for name, extra in (("orbit_leo_lagrange.toml", ["--t-end", "20000"]),
+                        ("orbit_elliptic_pitch.toml", ["--t-end", "60"])):
+        path = example(name)
+        kw = {"t_end": float(extra[1])}
+        s = newtop.section(path, surface="gamma2 = 0", crossings=30, direction="both", **kw)
+        j = program_json("section", path, "--surface", "gamma2 = 0", "--crossings", "30",
+                         "--direction", "both", *extra, ok=(0, 3))
+        assert isinstance(s, newtop.OrbitSection) and s.count == j["count"] > 0, name
+        c = j["crossings"]
+        assert np.array_equal(s.t, [x["t"] for x in c])
+        assert np.array_equal(s.gamma, [x["gamma"] for x in c])
+        assert np.array_equal(s.normal, [x["normal"] for x in c])
+        assert np.array_equal(s.omega, [x["omega"] for x in c])
+        assert np.array_equal(s.euler_321, [x["coords"]["euler_321"] for x in c])
+        assert np.array_equal(s.omega_relative, [x["coords"]["omega_relative"] for x in c])
+        assert np.array_equal(s.roll_pitch_yaw, [x["coords"]["roll_pitch_yaw"] for x in c])
+        assert np.array_equal(s.lvlh_quaternion, [x["coords"]["lvlh_quaternion"] for x in c])
+        if s.nu is not None:
+            assert np.array_equal(s.nu, [x["nu"] for x in c])
+        assert (s.stopped_by, s.outcome, s.method, s.orbit) == (
+            j["stopped_by"], j["outcome"], j["method"], j["orbit"])
+        assert s.max_surface_residual == j["max_surface_residual"]
+        assert s.integrals_drift == j["integrals_drift"]
+
+
+def test_orbit_chaos_equals_the_program():
+    path = example("orbit_leo_lagrange.toml")
+    sc = newtop.load_scenario(path)
+    c = newtop.chaos(path, t_end=3000.0, tol=1e-10, spectrum=True)
+    j = program_json("chaos", path, "--t-end", "3000", "--tol", "1e-10", "--spectrum")
+    assert isinstance(c, newtop.OrbitChaosResult)
+    assert (c.lyapunov_max, c.megno, c.fli, c.t_end, c.outcome, c.method, c.tol) == (
+        j["lyapunov_max"], j["megno"], j["fli"], j["t_end"], j["outcome"], j["method"], j["tol"])
+    assert np.array_equal(c.spectrum, j["spectrum"])
+    # an OrbitModel and a state give the same numbers
+    m = newtop.chaos(sc.model, sc.initial, 3000.0, tol=1e-10, spectrum=True)
+    assert m.megno == c.megno and np.array_equal(m.spectrum, c.spectrum)
+    with pytest.raises(ValueError, match="step: chaos on an orbit runs an embedded pair"):
+        newtop.chaos(path, t_end=10.0, step=1.0)
+
+
+def test_orbit_equilibria_and_stability_of_a_path():
+    path = example("orbit_leo_lagrange.toml")
+    eq = newtop.equilibria(path)
+    j = program_json("equilibria", path)
+    assert isinstance(eq, newtop.RelativeEquilibria) and eq.count == j["count"]
+    path = example("orbit_leo_lagrange_rest.toml")  # [initial] at a relative equilibrium
+    st = newtop.stability(path)
+    j = program_json("stability", path)
+    assert isinstance(st, newtop.RelativeStability) and st.max_real_part == j["max_real_part"]
+
+
+def test_debra_delp_diagram_as_stability_diagram():
+    d = newtop.stability(diagram="debra-delp", scan="k_R=-0.9:0.9:5,k_Y=-0.9:0.9:4")
+    p = subprocess.run([EXE, "stability", "--diagram", "debra-delp", "--scan",
+                        "k_R=-0.9:0.9:5,k_Y=-0.9:0.9:4", "--json"], capture_output=True,
+                       text=True)
+    assert p.returncode == 0, p.stderr
+    j = json.loads(p.stdout)
+    assert isinstance(d, newtop.DebraDelpDiagram)
+    assert d.counts == j["counts"]
+    assert np.array_equal(d.max_real_part, [x["max_real_part"] for x in j["points"]])
+
+
+def test_a_sweep_file_runs_natively():
+    path = example("sweep_megno.toml")
+    r = newtop.sweep(path, threads=2)
+    j = program_json("sweep", path)
+    assert r["points"] == j["points"] and r["failed"] == j["failed"]
+    for key in r["results"]:
+        if key != "status":
+            assert np.array_equal(r["results"][key], j["results"][key], equal_nan=True), key
+    with pytest.raises(TypeError, match="'quantities'"):
+        newtop.sweep(path, quantities=["megno"])
+
+
+@pytest.mark.parametrize("call, option", [
+    (lambda p: newtop.chaos(p, out="h.csv"), "out"),
+    (lambda p: newtop.section(p, out="s.csv"), "out"),
+    (lambda p: newtop.stability(p, scan_omega="0:3:61"), "scan_omega"),
+    (lambda p: newtop.rotations(p, out="cone.csv"), "out"),
+    (lambda p: newtop.analytic(p, dense=100), "dense"),
+    (lambda p: newtop.find_integrals(p, potential="v.toml"), "potential"),
+    (lambda p: newtop.equilibria(p, json=True), "json"),
+])
+def test_options_without_a_native_form_are_refused_by_name(call, option):
+    with pytest.raises(TypeError, match="'%s'" % option):
+        call(example("heavy_top.toml"))
