@@ -25,12 +25,12 @@ try:  # the compiled extension, when the build made one (PYTHONPATH=build/python
     from ._newtop import (AnalyticResult, ChaosResult, Equilibria, Section,  # noqa: F401
                           StabilityReport)
     from ._newtop import (DebraDelpDiagram, OrbitModel, OrbitScenario, OrbitState,  # noqa: F401
-                          OrbitChaosResult, OrbitSection, RelativeEquilibria, RelativeStability,
+                          LibrationReport, OrbitChaosResult, OrbitSection, RelativeEquilibria, RelativeStability,
                           debra_delp)
     from ._newtop import IntegralSearch, RotationFamilies  # noqa: F401
-    from .commands import integrals, libration, simulate, view  # noqa: F401
+    from .commands import integrals, simulate, view  # noqa: F401
     from .analyses import (analytic, chaos, equilibria, field, find_integrals,  # noqa: F401
-                           rotations, section, stability, sweep)
+                           libration, rotations, section, stability, sweep)
 
     HAVE_EXTENSION = True
 except ModuleNotFoundError as e:  # absent is fine; present but broken is an error
@@ -45,7 +45,7 @@ if HAVE_EXTENSION:
                 "Body", "InputError", "MassModel", "Model", "QuadraticField", "Scenario", "State",
                 "analytic", "chaos", "conserved_integrals", "equilibria", "field", "find_integrals",
                 "integrals", "integrals_at", "integrate", "integrate_ensemble", "chaos_ensemble",
-                "is_orbit_scenario", "libration",
+                "is_orbit_scenario", "libration", "LibrationReport",
                 "load_scenario", "parse_scenario", "rotations", "section", "simulate", "stability", "sweep",
                 "view", "DebraDelpDiagram", "OrbitChaosResult", "OrbitModel", "OrbitScenario",
                 "OrbitSection", "OrbitState",

@@ -313,6 +313,33 @@ def field(model, gamma=None, *, R=None, scan_R=None, **options):
     return _newtop._field(m, np.asarray(gamma, dtype=float), R=R, scan_R=scan)
 
 
+def libration(model, state=None, *, resonances=None, spin=None, iterates=200, asymmetric=False,
+              out=None, **options):
+    """Planar pitch on a Kepler orbit (docs/orbit.md §9): ``LibrationReport`` with
+    ``eccentricity``, ``k``, ``iterates``, ``chaos_threshold``, ``resonances`` (one dict each,
+    the solutions as arrays), the periapsis section's starts ``theta0``, ``dtheta0``, ``spin0``,
+    ``lyapunov``, ``chaotic`` (arrays) and ``points`` (per start, (iterates, 2)),
+    ``chaotic_starts``. ``resonances`` as "p:q,..." or [(p, q), ...] (default 1:2, 1:1, 3:2, 2:1,
+    5:2); ``spin=(LO, HI, N)`` or "LO:HI:N" adds N starts at periapsis; ``out=`` writes the
+    section CSV of ``newtop libration --out``. On an OrbitScenario (or its path), or an
+    OrbitModel with an OrbitState."""
+    _no_options("libration", options)
+    model = _load(model)
+    if not _orbit(model):
+        raise TypeError("libration: expected an orbit scenario (a file with [orbit], an "
+                        "OrbitScenario or an OrbitModel), found %s" % type(model).__name__)
+    sc = _orbit_scenario(model, state)
+    if resonances is None:
+        resonances = "1:2,1:1,3:2,2:1,5:2"
+    elif not isinstance(resonances, str):
+        resonances = ",".join("%d:%d" % (int(p), int(q)) for p, q in resonances)
+    if spin is not None and not isinstance(spin, str):
+        spin = "%r:%r:%d" % (float(spin[0]), float(spin[1]), int(spin[2]))
+    return _newtop._libration(sc, resonances=resonances, spin=spin, iterates=iterates,
+                              asymmetric=asymmetric,
+                              out=None if out is None else os.fspath(out))
+
+
 def _toml(value):
     """A TOML value: numbers in their shortest round-trip form, strings quoted, lists."""
     if isinstance(value, str):
@@ -409,5 +436,6 @@ def sweep(base, axes=None, quantities=None, *, threads=0, state=None, combine="g
     return _newtop._sweep(text, source, base_text, threads=threads)
 
 
-__all__ = ["analytic", "chaos", "equilibria", "field", "find_integrals", "rotations", "scenario_text",
+__all__ = ["analytic", "chaos", "equilibria", "field", "find_integrals", "libration", "rotations",
+           "scenario_text",
            "section", "stability", "sweep"]

@@ -24,4 +24,5 @@ PYBIND11_MODULE(_newtop, m) {
   newtop::python::bind_orbit_run(m);
   newtop::python::bind_orbit_analyses(m);
   newtop::python::bind_orbit_phase(m);
+  newtop::python::bind_orbit_libration(m);
 }

@@ -40,4 +40,7 @@ void bind_orbit_analyses(pybind11::module_& m);
 /// section and chaos on an OrbitScenario (orbit_phase.cpp).
 void bind_orbit_phase(pybind11::module_& m);
 
+/// The libration report (orbit_libration.cpp).
+void bind_orbit_libration(pybind11::module_& m);
+
 }  // namespace newtop::python

@@ -237,3 +237,54 @@ def test_a_sweep_file_runs_natively():
 def test_options_without_a_native_form_are_refused_by_name(call, option):
     with pytest.raises(TypeError, match="'%s'" % option):
         call(example("heavy_top.toml"))
+
+
+def solutions_equal(sol, js):
+    assert np.array_equal(sol["theta0"], [x["theta0"] for x in js])
+    assert np.array_equal(sol["dtheta0"], [x["dtheta0"] for x in js])
+    assert np.array_equal(sol["spin0"], [x["spin0"] for x in js])
+    assert np.array_equal(sol["multipliers"].reshape(-1, 2),
+                          np.reshape([pairs(x["multipliers"]) for x in js], (-1, 2)))
+    assert np.array_equal(sol["trace"], [x["trace"] for x in js])
+    assert sol["stability"] == [x["stability"] for x in js]
+    for key in ("residual", "max_deviation", "symmetry_distance"):
+        assert np.array_equal(sol[key], [x[key] for x in js]), key
+    assert sol["symmetric"].tolist() == [x["symmetric"] for x in js]
+
+
+@pytest.mark.parametrize("name", ["orbit_spin_orbit.toml", "libration_asymmetric.toml"])
+def test_libration_equals_the_program(tmp_path, name):
+    path = example(name)
+    csv = tmp_path / "lib.csv"
+    r = newtop.libration(path, resonances=[(1, 1), (3, 2)], spin=(0.5, 2.5, 3), iterates=30,
+                         asymmetric=True, out=csv)
+    prog = tmp_path / "prog.csv"
+    j = program_json("libration", path, "--resonances", "1:1,3:2", "--spin", "0.5:2.5:3",
+                     "--iterates", "30", "--asymmetric", "--out", str(prog))
+    assert isinstance(r, newtop.LibrationReport)
+    assert (r.eccentricity, r.k, r.iterates, r.chaos_threshold, r.chaotic_starts) == (
+        j["eccentricity"], j["k"], j["iterates"], j["chaos_threshold"], j["chaotic_starts"])
+    assert len(r.resonances) == len(j["resonances"]) == 2
+    for x, jx in zip(r.resonances, j["resonances"]):
+        for key in ("resonance", "spin_ratio", "periods", "half_turns", "strength",
+                    "averaged_half_width"):
+            assert x[key] == jx[key], key
+        solutions_equal(x["solutions"], jx["solutions"])
+        solutions_equal(x["asymmetric_solutions"], jx["asymmetric_solutions"])
+    for key in ("theta0", "dtheta0", "spin0", "lyapunov"):
+        assert np.array_equal(getattr(r, key), [s[key] for s in j["starts"]]), key
+    assert r.chaotic.tolist() == [s["chaotic"] for s in j["starts"]]
+    assert len(r.points) == 4 and r.points[0].shape == (30, 2)
+    assert csv.read_bytes() == prog.read_bytes()  # the program's CSV, byte for byte
+    rows = np.loadtxt(csv, delimiter=",", skiprows=1)
+    assert np.array_equal(rows[:30, 2:4], r.points[0])
+    # the defaults, on the scenario object
+    d = newtop.libration(newtop.load_scenario(path), iterates=5)
+    jd = program_json("libration", path, "--iterates", "5")
+    assert [x["resonance"] for x in d.resonances] == [x["resonance"] for x in jd["resonances"]]
+    assert d.resonances[0]["asymmetric_solutions"] is None
+    assert np.array_equal(d.lyapunov, [s["lyapunov"] for s in jd["starts"]])
+    with pytest.raises(ValueError, match="iterates: expected 1 to 100000, found 0"):
+        newtop.libration(path, iterates=0)
+    with pytest.raises(TypeError, match="expected an orbit scenario"):
+        newtop.libration(example("brun.toml"))
