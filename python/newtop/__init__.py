@@ -28,9 +28,10 @@ try:  # the compiled extension, when the build made one (PYTHONPATH=build/python
                           LibrationReport, OrbitChaosResult, OrbitSection, RelativeEquilibria, RelativeStability,
                           debra_delp)
     from ._newtop import IntegralSearch, RotationFamilies  # noqa: F401
-    from .commands import integrals, simulate, view  # noqa: F401
+    from . import commands  # noqa: F401  (the command line from Python)
     from .analyses import (analytic, chaos, equilibria, field, find_integrals,  # noqa: F401
-                           libration, rotations, section, stability, sweep)
+                           integrals, libration, rotations, section, simulate, stability,
+                           sweep, view)
 
     HAVE_EXTENSION = True
 except ModuleNotFoundError as e:  # absent is fine; present but broken is an error

@@ -340,6 +340,122 @@ def libration(model, state=None, *, resonances=None, spin=None, iterates=200, as
                               out=None if out is None else os.fspath(out))
 
 
+def integrals(model, state=None, **options):
+    """The first integrals at the initial state (or ``state``) and which are conserved for the
+    model: a dict with ``integrals`` (``energy``, ``area``, ``geometric``, and ``brun``,
+    ``lagrange`` where they hold) and ``conserved`` (their names), the numbers of
+    ``newtop integrals --json``."""
+    _no_options("integrals", options)
+    model = _load(model)
+    if _orbit(model):
+        raise TypeError("integrals: no native form on an orbit yet (the Jacobi integral is "
+                        "OrbitModel.integral(state)); newtop.commands.integrals(path) runs the "
+                        "command line")
+    m, s = _model_state(model, _state(state))
+    if s is None:
+        raise ValueError("state: missing: give the state")
+    return {"integrals": _newtop.integrals(m, s), "conserved": _newtop.conserved_integrals(m)}
+
+
+_RUN_ARRAYS = ("t", "omega", "gamma", "m", "energy", "area", "geometric", "brun", "lagrange",
+               "quaternion")
+
+
+def _vector_norm(v):
+    return float(np.sqrt(np.dot(v, v)))
+
+
+def simulate(model, state=None, t_end=None, *, t0=None, method=None, step=None, tol=None,
+             split=None, max_steps=None, out=None, every=None, euler=None, **options):
+    """One run with its summary, as ``newtop simulate --json``: a dict with the run's arrays
+    (``t`` (N), ``omega``, ``gamma``, ``m`` (N, 3), the integrals (N), ``quaternion`` (N, 4)
+    with an attitude; also the whole ``newtop.integrate`` dict as ``trajectory``), ``outcome``,
+    ``steps``, ``rejected_steps``, ``method``, ``step`` or ``tolerance``, ``final`` (``t``,
+    ``omega``, ``gamma``, ``m``[, ``quaternion``]), ``integrals`` (``initial``, ``final``,
+    ``max_abs_drift``), ``casimir_drift``, ``conserved``; on an exact or multipole field
+    ``quadratic_comparison`` (the same method on the quadratic model). ``out=`` (or the
+    scenario's [output] file) writes the CSV of ``newtop simulate --out`` (every ``every``-th
+    step and the last; ``euler=321`` or ``313`` adds Euler angles), the same bytes."""
+    _no_options("simulate", options)
+    model = _load(model)
+    if _orbit(model):
+        raise TypeError("simulate: no native summary on an orbit yet; newtop.integrate(orbit) "
+                        "gives its rows, newtop.commands.simulate(path) the command line's JSON")
+    inputs = []
+    if isinstance(model, _newtop.Scenario):
+        _scenario_only("simulate", model, t0=t0, max_steps=max_steps)
+        if state is not None:
+            raise TypeError("simulate(scenario): unexpected option 'state' (set "
+                            "scenario.initial)")
+        output = model.output
+        if output["dt"] is not None and out is None and every is None:
+            raise ValueError("[output] dt: rows at output times have no native form here; "
+                             "newtop.commands.simulate(path) runs the command line")
+        if out is None and every is None:
+            out, every = output["file"], output["every"]
+        inputs = list(model.input_files)
+        run = _newtop.integrate(model, t_end=t_end, method=method, step=step, tol=tol,
+                                split=split)
+        m, x0 = model.model, model.initial
+    else:
+        if split is not None:
+            raise TypeError("simulate(model): unexpected option 'split' (give a Scenario)")
+        if t_end is None:
+            raise ValueError("t_end: missing: give t_end")
+        m, x0 = model, _state(state)
+        run = _newtop.integrate(m, x0, t_end, t0=0.0 if t0 is None else t0, method=method,
+                                step=step, tol=tol, max_steps=max_steps)
+    if euler is not None and "quaternion" not in run:
+        raise ValueError("euler: expected a scenario with an attitude ([initial] quaternion, "
+                         "rotation_matrix, euler_321 or euler_313), found none")
+    r = {"trajectory": run}
+    for name in _RUN_ARRAYS:
+        if name in run:
+            r[name] = run[name]
+    r["method"] = run["method"]
+    if "tolerance" in run:
+        r["tolerance"] = run["tolerance"]
+    else:
+        r["step"] = run["step"]
+    r["outcome"], r["steps"], r["rejected_steps"] = run["outcome"], run["steps"], run["rejected"]
+    body = m.body
+    last = _newtop.State(run["m"][-1], run["gamma"][-1])
+    r["final"] = {"t": float(run["t"][-1]), "omega": last.omega(body), "gamma": run["gamma"][-1],
+                  "m": run["m"][-1]}
+    if "quaternion" in run:
+        r["final"]["quaternion"] = run["quaternion"][-1]
+    s = _newtop._simulation_summary(m, run["t"], run["m"], run["gamma"])
+    r["integrals"] = {k: s[k] for k in ("initial", "final", "max_abs_drift")}
+    r["casimir_drift"] = s["casimir_drift"]
+    r["conserved"] = _newtop.conserved_integrals(m)
+    if m.kind != "quadratic":
+        keys = ({"tol": run["tolerance"]["abs"]} if "tolerance" in run
+                else {"step": run["step"]})
+        q = _newtop.integrate(m.quadratic_approximation(), x0, float(run["t"][-1]),
+                              t0=float(run["t"][0]), method=run["method"], **keys)
+        qs = _newtop.State(q["m"][-1], q["gamma"][-1])
+        r["quadratic_comparison"] = {
+            "outcome": q["outcome"], "gamma": q["gamma"][-1], "omega": qs.omega(body),
+            "difference_gamma": _vector_norm(run["gamma"][-1] - q["gamma"][-1]),
+            "difference_omega": _vector_norm(last.omega(body) - qs.omega(body))}
+    if out is not None:
+        _newtop._write_trajectory_csv(os.fspath(out), m, run["t"], run["m"], run["gamma"],
+                                      quaternion=run.get("quaternion"),
+                                      every=1 if every is None else every,
+                                      euler=0 if euler is None else euler, inputs=inputs)
+        r["csv"] = os.fspath(out)
+    return r
+
+
+def view(csv, out, scenario=None, *, max_frames=5000):
+    """The self-contained HTML page that plays a trajectory CSV in 3D (``newtop view``): the
+    scenario (a path, a Scenario or an OrbitScenario) draws the body. Writes ``out`` (the bytes
+    of ``newtop view CSV -o OUT [--scenario S]``) and returns it."""
+    scenario = _load(scenario) if scenario is not None else None
+    _newtop._view(os.fspath(csv), os.fspath(out), scenario, max_frames=max_frames)
+    return out
+
+
 def _toml(value):
     """A TOML value: numbers in their shortest round-trip form, strings quoted, lists."""
     if isinstance(value, str):
@@ -436,6 +552,5 @@ def sweep(base, axes=None, quantities=None, *, threads=0, state=None, combine="g
     return _newtop._sweep(text, source, base_text, threads=threads)
 
 
-__all__ = ["analytic", "chaos", "equilibria", "field", "find_integrals", "libration", "rotations",
-           "scenario_text",
-           "section", "stability", "sweep"]
+__all__ = ["analytic", "chaos", "equilibria", "field", "find_integrals", "integrals", "libration",
+           "rotations", "scenario_text", "section", "simulate", "stability", "sweep", "view"]

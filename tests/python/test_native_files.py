@@ -288,3 +288,69 @@ def test_libration_equals_the_program(tmp_path, name):
         newtop.libration(path, iterates=0)
     with pytest.raises(TypeError, match="expected an orbit scenario"):
         newtop.libration(example("brun.toml"))
+
+
+SIMULATE_KEYS = ("outcome", "steps", "rejected_steps", "method", "step", "tolerance", "final",
+                 "integrals", "casimir_drift", "conserved", "quadratic_comparison")
+
+
+@pytest.mark.parametrize("name, words", [
+    ("brun.toml", ["--t-end", "3", "--step", "0.01"]),
+    ("brun.toml", ["--t-end", "3", "--tol", "1e-10"]),
+    ("exact_box_multipole.toml", ["--t-end", "2"]),
+    ("attitude_heavy_top.toml", ["--t-end", "2", "--every", "7", "--euler", "321"]),
+])
+def test_simulate_natively_equals_the_program(tmp_path, name, words):
+    path = example(name)
+    kw = {w[2:].replace("-", "_"): (int(v) if w in ("--every", "--euler") else float(v))
+          for w, v in zip(words[::2], words[1::2])}
+    csv, prog = tmp_path / "run.csv", tmp_path / "prog.csv"
+    r = newtop.simulate(path, out=csv, **kw)
+    j = program_json("simulate", path, *words, "--out", str(prog))
+    assert csv.read_bytes() == prog.read_bytes()  # the program's CSV, byte for byte
+    for key in SIMULATE_KEYS:
+        assert (key in r) == (key in j), key
+        if key in j:
+            same(r[key], j[key], key)
+    assert r["t"].shape == r["trajectory"]["t"].shape and r["gamma"] is r["trajectory"]["gamma"]
+    sc = newtop.load_scenario(path)  # the Scenario read from the file: the same run
+    assert np.array_equal(newtop.simulate(sc, **{k: v for k, v in kw.items()
+                                                 if k in ("t_end", "step", "tol")})["gamma"],
+                          r["gamma"])
+
+
+def same(a, b, where=""):
+    """Python's value against the JSON's, bit for bit (arrays against lists, dicts by key)."""
+    if isinstance(b, dict):
+        assert set(a) == set(b), where
+        for k in b:
+            same(a[k], b[k], where + "." + k)
+    elif isinstance(b, list) and b and not isinstance(b[0], str):
+        assert np.array_equal(np.asarray(a, dtype=float), np.asarray(b, dtype=float)), where
+    else:
+        assert a == b, where
+
+
+def test_integrals_natively_equal_the_program():
+    for name in ("brun.toml", "heavy_top.toml", "exact_box_multipole.toml"):
+        path = example(name)
+        r = newtop.integrals(path)
+        j = program_json("integrals", path)
+        same(r["integrals"], j["integrals"], name)
+        assert r["conserved"] == j["conserved"]
+
+
+def test_view_natively_writes_the_programs_page(tmp_path):
+    path = example("brun.toml")
+    csv = tmp_path / "run.csv"
+    newtop.simulate(path, t_end=5.0, out=csv)
+    for scenario in (None, path, newtop.load_scenario(path)):
+        page, prog = tmp_path / "page.html", tmp_path / "prog.html"
+        assert newtop.view(csv, page, scenario=scenario) == page
+        words = [EXE, "view", str(csv), "-o", str(prog)]
+        if scenario is not None:
+            words += ["--scenario", path]
+        assert subprocess.run(words, capture_output=True).returncode == 0
+        assert page.read_bytes() == prog.read_bytes()
+    with pytest.raises(ValueError, match="max_frames"):
+        newtop.view(csv, tmp_path / "x.html", max_frames=1)
