@@ -1,12 +1,13 @@
 """newtop from Python.
 
 The compiled extension ``newtop._newtop`` (pybind11) gives the library: ``Body``,
-``QuadraticField``, ``Model``, ``State``, ``load_scenario``, ``integrals``, ``integrate`` (numpy
-arrays); ``newtop.analyses`` gives the analyses on those objects (``newtop.equilibria(model)``,
-``newtop.stability``, ``newtop.chaos``, ``newtop.section``, ``newtop.analytic``: typed results
-with numpy arrays); ``newtop.commands`` gives one function per subcommand (``newtop.simulate``,
-``newtop.integrals``, ``newtop.equilibria``, ``newtop.stability``, ``newtop.analytic``, ...) that
-returns the subcommand's JSON as a dict. Both are re-exported here (docs/python.md).
+``QuadraticField``, ``Model``, ``State``, ``Scenario``, ``load_scenario``, ``integrate`` (numpy
+arrays), the orbit model; ``newtop.analyses`` gives every analysis on those objects, on a Scenario
+read from a file or on a path (``newtop.equilibria``, ``stability``, ``section``, ``chaos``,
+``analytic``, ``rotations``, ``find_integrals``, ``field``, ``integrals``, ``simulate``,
+``libration``, ``view``, ``sweep``: typed results with numpy arrays, computed in this process).
+``newtop.commands`` is the command line from Python: it runs the ``newtop`` program as a separate
+process and returns its JSON as a dict (docs/python.md).
 
 The pictures (``newtop.plot``) and the readers of newtop's files (``newtop.results``) are pure
 Python (numpy, matplotlib): without the extension ``import newtop`` still works for them and
