@@ -354,3 +354,23 @@ def test_view_natively_writes_the_programs_page(tmp_path):
         assert page.read_bytes() == prog.read_bytes()
     with pytest.raises(ValueError, match="max_frames"):
         newtop.view(csv, tmp_path / "x.html", max_frames=1)
+
+
+def test_the_command_line_runs_the_program_as_a_process(tmp_path, monkeypatch):
+    # beside the package (build/python/newtop -> build/newtop), or NEWTOP_EXECUTABLE, else a clear
+    # error; the module itself has no entry point into the program.
+    assert not hasattr(newtop._newtop, "_run_command_line")
+    monkeypatch.delenv("NEWTOP_EXECUTABLE", raising=False)
+    assert os.path.samefile(newtop.commands.executable(), EXE)
+    code, out, err = newtop.commands.run(["integrals", example("brun.toml"), "--json"])
+    assert code == 0 and json.loads(out)["conserved"] == newtop.integrals(
+        example("brun.toml"))["conserved"]
+    assert newtop.commands.run(["integrals", str(tmp_path / "none.toml")])[0] == 2
+    with pytest.raises(ValueError, match="none.toml"):
+        newtop.commands.integrals(str(tmp_path / "none.toml"))
+    monkeypatch.setenv("NEWTOP_EXECUTABLE", str(tmp_path / "no_such_program"))
+    with pytest.raises(FileNotFoundError, match="NEWTOP_EXECUTABLE"):
+        newtop.commands.run(["integrals", example("brun.toml")])
+    monkeypatch.setenv("NEWTOP_EXECUTABLE", EXE)
+    assert newtop.commands.equilibria(example("heavy_top.toml"))["count"] == newtop.equilibria(
+        example("heavy_top.toml")).count
