@@ -1,12 +1,13 @@
 """newtop from Python.
 
 The compiled extension ``newtop._newtop`` (pybind11) gives the library: ``Body``,
-``QuadraticField``, ``Model``, ``State``, ``load_scenario``, ``integrals``, ``integrate`` (numpy
-arrays); ``newtop.analyses`` gives the analyses on those objects (``newtop.equilibria(model)``,
-``newtop.stability``, ``newtop.chaos``, ``newtop.section``, ``newtop.analytic``: typed results
-with numpy arrays); ``newtop.commands`` gives one function per subcommand (``newtop.simulate``,
-``newtop.integrals``, ``newtop.equilibria``, ``newtop.stability``, ``newtop.analytic``, ...) that
-returns the subcommand's JSON as a dict. Both are re-exported here (docs/python.md).
+``QuadraticField``, ``Model``, ``State``, ``Scenario``, ``load_scenario``, ``integrate`` (numpy
+arrays), the orbit model; ``newtop.analyses`` gives every analysis on those objects, on a Scenario
+read from a file or on a path (``newtop.equilibria``, ``stability``, ``section``, ``chaos``,
+``analytic``, ``rotations``, ``find_integrals``, ``field``, ``integrals``, ``simulate``,
+``libration``, ``view``, ``sweep``: typed results with numpy arrays, computed in this process).
+``newtop.commands`` is the command line from Python: it runs the ``newtop`` program as a separate
+process and returns its JSON as a dict (docs/python.md).
 
 The pictures (``newtop.plot``) and the readers of newtop's files (``newtop.results``) are pure
 Python (numpy, matplotlib): without the extension ``import newtop`` still works for them and
@@ -25,11 +26,13 @@ try:  # the compiled extension, when the build made one (PYTHONPATH=build/python
     from ._newtop import (AnalyticResult, ChaosResult, Equilibria, Section,  # noqa: F401
                           StabilityReport)
     from ._newtop import (DebraDelpDiagram, OrbitModel, OrbitScenario, OrbitState,  # noqa: F401
-                          RelativeEquilibria, RelativeStability, debra_delp)
+                          LibrationReport, OrbitChaosResult, OrbitSection, RelativeEquilibria, RelativeStability,
+                          debra_delp)
     from ._newtop import IntegralSearch, RotationFamilies  # noqa: F401
-    from .commands import integrals, libration, simulate, view  # noqa: F401
+    from . import commands  # noqa: F401  (the command line from Python)
     from .analyses import (analytic, chaos, equilibria, field, find_integrals,  # noqa: F401
-                           rotations, section, stability, sweep)
+                           integrals, libration, rotations, section, simulate, stability,
+                           sweep, view)
 
     HAVE_EXTENSION = True
 except ModuleNotFoundError as e:  # absent is fine; present but broken is an error
@@ -44,7 +47,8 @@ if HAVE_EXTENSION:
                 "Body", "InputError", "MassModel", "Model", "QuadraticField", "Scenario", "State",
                 "analytic", "chaos", "conserved_integrals", "equilibria", "field", "find_integrals",
                 "integrals", "integrals_at", "integrate", "integrate_ensemble", "chaos_ensemble",
-                "is_orbit_scenario", "libration",
+                "is_orbit_scenario", "libration", "LibrationReport",
                 "load_scenario", "parse_scenario", "rotations", "section", "simulate", "stability", "sweep",
-                "view", "DebraDelpDiagram", "OrbitModel", "OrbitScenario", "OrbitState",
+                "view", "DebraDelpDiagram", "OrbitChaosResult", "OrbitModel", "OrbitScenario",
+                "OrbitSection", "OrbitState",
                 "RelativeEquilibria", "RelativeStability", "debra_delp"]

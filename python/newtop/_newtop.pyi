@@ -139,7 +139,6 @@ def integrate_ensemble(model_or_models: Union[Model, Sequence[Model]],
 def chaos_ensemble(model_or_models: Union[Model, Sequence[Model]],
                    states: Union[Sequence[State], Any], t_end: float, *, tol: float,
                    t0: float = 0.0, max_steps: Optional[int] = None) -> dict[str, Any]: ...
-def _run_command_line(args: Sequence[str]) -> tuple[int, bytes, bytes]: ...
 def brun_state_at(model: Model, state: State, t: float) -> State: ...
 def resonance_family(eccentricity: float, k: float, parameter: str, end: float, p: int = 1,
                      q: int = 1, line: float = 0.0, switch: bool = False) -> dict[str, Any]: ...
@@ -198,6 +197,7 @@ class ChaosResult:
     history: Optional[dict[str, Array]]
 
 class Section:
+    stopped_by: str
     surface: str
     count: int
     orbit: npt.NDArray[np.int32]
@@ -364,3 +364,60 @@ def debra_delp(k_R: tuple[float, float, int] = (-0.99, 0.99, 67),
 def _orbit_equilibria(model: OrbitModel) -> RelativeEquilibria: ...
 def _orbit_stability(model: OrbitModel, *, equilibrium: Optional[int] = None,
                      state: Optional[OrbitState] = None) -> RelativeStability: ...
+
+class OrbitSection:
+    surface: str
+    direction: str
+    method: str
+    count: int
+    orbit: str
+    t: npt.NDArray[np.float64]
+    nu: Optional[npt.NDArray[np.float64]]
+    crossing_orbit: npt.NDArray[np.int32]
+    omega: npt.NDArray[np.float64]
+    gamma: npt.NDArray[np.float64]
+    m: npt.NDArray[np.float64]
+    normal: npt.NDArray[np.float64]
+    euler_321: npt.NDArray[np.float64]
+    omega_relative: npt.NDArray[np.float64]
+    roll_pitch_yaw: npt.NDArray[np.float64]
+    lvlh_quaternion: npt.NDArray[np.float64]
+    stopped_by: str
+    max_surface_residual: float
+    integrals_drift: dict[str, float]
+    outcome: str
+class OrbitChaosResult:
+    lyapunov_max: float
+    megno: float
+    megno_y: float
+    fli: float
+    spectrum: Optional[npt.NDArray[np.float64]]
+    t_end: float
+    outcome: str
+    method: str
+    tol: float
+    orbit: str
+    history: Optional[dict[str, npt.NDArray[np.float64]]]
+class LibrationReport:
+    eccentricity: float
+    k: float
+    iterates: int
+    chaos_threshold: float
+    chaotic_starts: int
+    resonances: list[dict[str, Any]]
+    theta0: npt.NDArray[np.float64]
+    dtheta0: npt.NDArray[np.float64]
+    spin0: npt.NDArray[np.float64]
+    lyapunov: npt.NDArray[np.float64]
+    chaotic: npt.NDArray[np.bool_]
+    points: list[npt.NDArray[np.float64]]
+def _orbit_section(scenario: OrbitScenario, **kwargs: Any) -> OrbitSection: ...
+def _orbit_chaos(scenario: OrbitScenario, **kwargs: Any) -> OrbitChaosResult: ...
+def _libration(scenario: OrbitScenario, **kwargs: Any) -> LibrationReport: ...
+def _chaos_scenario(scenario: Scenario, **kwargs: Any) -> ChaosResult: ...
+def _section_scenario(scenario: Scenario, **kwargs: Any) -> Section: ...
+def _simulation_summary(model: Model, t: Any, m: Any, gamma: Any) -> dict[str, Any]: ...
+def _write_trajectory_csv(path: str, model: Model, t: Any, m: Any, gamma: Any,
+                          **kwargs: Any) -> None: ...
+def _view(csv: str, out: str, scenario: Any = None, max_frames: int = 5000) -> int: ...
+def _sweep_file(path: str, threads: int = 0) -> dict[str, Any]: ...

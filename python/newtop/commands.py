@@ -1,24 +1,37 @@
-"""One Python function per ``newtop`` subcommand.
+"""The command line from Python: one function per ``newtop`` subcommand.
 
-``newtop.simulate(scenario, t_end=..., step=...)`` runs ``newtop simulate SCENARIO --t-end ...
---step ... --json`` in this process and returns its JSON as a dict: the same keys and the same
-numbers, bit for bit (the JSON carries 17 significant digits). Lists of numbers become numpy
-arrays (vectors: shape (3,); tables: (N, k)). A keyword ``name=value`` is the option ``--name
-value`` (underscores become dashes); ``True`` is a flag, ``None`` and ``False`` leave it out; a list
-or tuple is written comma-separated (``times=[1, 2]`` is ``--times 1,2``).
+``newtop.commands.simulate(scenario, t_end=..., step=...)`` runs ``newtop simulate SCENARIO
+--t-end ... --step ... --json`` as a separate process and returns its JSON as a dict: the same
+keys and the same numbers, bit for bit (the JSON carries 17 significant digits). Lists of numbers
+become numpy arrays (vectors: shape (3,); tables: (N, k)). A keyword ``name=value`` is the option
+``--name value`` (underscores become dashes); ``True`` is a flag, ``None`` and ``False`` leave it
+out; a list or tuple is written comma-separated (``times=[1, 2]`` is ``--times 1,2``).
+``run(words)`` runs ``newtop WORDS...`` and returns (exit code, stdout, stderr).
+
+The program is found from the environment variable ``NEWTOP_EXECUTABLE``, else beside the
+package (``build/newtop`` for the package in ``build/python/newtop``; ``PREFIX/bin/newtop`` for
+one installed under ``PREFIX/lib/python3/dist-packages``), else on ``PATH``
+(``FileNotFoundError`` naming the three places when none is there).
 
 Errors: bad input raises ``ValueError`` with the command line's one-line message (without the
 ``newtop: error:`` prefix); an internal error raises ``RuntimeError``; an interrupted run raises
 ``KeyboardInterrupt``. A run that ended before ``t_end`` (exit code 3) returns its result: its
 ``outcome`` says why.
+
+The analyses themselves, natively and with typed results, are ``newtop.NAME`` (docs/python.md).
 """
 
 import json
 import os
+import shutil
+import subprocess
 
 import numpy as np
 
-from . import _newtop
+try:
+    from . import _newtop
+except ModuleNotFoundError:  # the command line needs no extension
+    _newtop = None
 
 _BAD_INPUT = 2
 _INCOMPLETE = 3
@@ -43,8 +56,12 @@ def _number(v):
 
 
 def _scenario_path(scenario):
-    if isinstance(scenario, _newtop.Scenario):
-        return scenario.source
+    source = getattr(scenario, "source", None)  # a Scenario or OrbitScenario read from a file
+    if isinstance(source, str):
+        if source in ("<python>", "<string>") or not os.path.exists(source):
+            raise ValueError("scenario: expected a file for the command line, found a scenario "
+                             "built in code (%s): give its path" % source)
+        return source
     return os.fspath(scenario)
 
 
@@ -66,10 +83,37 @@ def _is_number(v):
     return isinstance(v, (int, float)) and not isinstance(v, bool)
 
 
+_PACKAGE = os.path.dirname(os.path.abspath(__file__))
+# Where the build and the install put the program, relative to this package.
+_BESIDE = (os.path.join(_PACKAGE, "..", "..", "newtop"),  # build/python/newtop -> build/newtop
+           os.path.join(_PACKAGE, "..", "..", "..", "..", "bin", "newtop"))  # PREFIX/lib/python3/dist-packages
+
+
+def executable():
+    """The ``newtop`` program: $NEWTOP_EXECUTABLE, else beside the package, else on PATH."""
+    given = os.environ.get("NEWTOP_EXECUTABLE")
+    if given:
+        if not (os.path.isfile(given) and os.access(given, os.X_OK)):
+            raise FileNotFoundError("NEWTOP_EXECUTABLE: expected the newtop program, found no "
+                                    "executable file at %s" % given)
+        return given
+    for path in _BESIDE:
+        if os.path.isfile(path) and os.access(path, os.X_OK):
+            return os.path.normpath(path)
+    found = shutil.which("newtop")
+    if found:
+        return found
+    raise FileNotFoundError("newtop: the program was not found: set NEWTOP_EXECUTABLE, or build "
+                            "it beside the package (%s), or put it on PATH"
+                            % os.path.normpath(_BESIDE[0]))
+
+
 def run(words):
-    """Runs ``newtop WORDS...`` in this process; returns (exit code, stdout, stderr) as text."""
-    code, out, err = _newtop._run_command_line([str(w) for w in words])
-    return code, out.decode("utf-8"), err.decode("utf-8")
+    """Runs ``newtop WORDS...`` as a separate process; returns (exit code, stdout, stderr) as
+    text. An exit by a signal is 128 + the signal, as a shell reports it."""
+    p = subprocess.run([executable(), *[str(w) for w in words]], capture_output=True)
+    code = p.returncode if p.returncode >= 0 else 128 - p.returncode
+    return code, p.stdout.decode("utf-8"), p.stderr.decode("utf-8")
 
 
 def _check(code, err):
@@ -133,9 +177,10 @@ def simulate(scenario, **options):
     """
     result = command("simulate", scenario, **options)
     path = _scenario_path(scenario)
-    if not _newtop.is_orbit_scenario(path):  # orbit scenarios: the JSON only, for now
+    # orbit scenarios: the JSON only
+    if _newtop is not None and not _newtop.is_orbit_scenario(path):
         sc = scenario if isinstance(scenario, _newtop.Scenario) else _newtop.load_scenario(path)
-        keys = {k: options.get(k) for k in ("t_end", "method", "step", "tol")}
+        keys = {k: options.get(k) for k in ("t_end", "method", "step", "tol", "split")}
         trajectory = _newtop.integrate(sc, **keys)
         result["trajectory"] = trajectory
         # the trajectory's arrays also at the top level (views of the same buffer)
@@ -156,5 +201,5 @@ def view(csv, out, scenario=None):
     return out
 
 
-__all__ = ["analytic", "chaos", "command", "equilibria", "field", "find_integrals", "integrals",
+__all__ = ["analytic", "chaos", "command", "equilibria", "executable", "field", "find_integrals", "integrals",
            "libration", "rotations", "run", "section", "simulate", "stability", "sweep", "view"]

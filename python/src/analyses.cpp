@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis_results.hpp"
 #include "bindings.hpp"
 #include "newtop/analysis/analytic_comparison.hpp"
 #include "newtop/analysis/brun_prym_inversion.hpp"
@@ -216,12 +217,6 @@ void bind_stability(py::module_& m) {
 
 // ---- chaos --------------------------------------------------------------------------------
 
-struct ChaosOut {
-  phase::ChaosResult result;
-  std::string method;
-  std::vector<phase::ChaosSample> history;
-};
-
 void bind_chaos(py::module_& m) {
   using S = phase::ChaosSample;
   py::class_<ChaosOut>(m, "ChaosResult",
@@ -273,17 +268,10 @@ void bind_chaos(py::module_& m) {
          const std::optional<std::string>& method, std::optional<double> step,
          std::optional<double> tol, bool spectrum, std::optional<std::int64_t> max_steps,
          bool history) {
-        phase::ChaosRequest r{.method = method_settings(model, method, step, tol),
-                              .t0 = t0,
-                              .t_end = t_end,
-                              .spectrum = spectrum};
-        if (max_steps) r.options.max_steps = *max_steps;
-        ChaosOut out;
-        out.method = r.method.name;
-        if (history) r.history = [&out](const phase::ChaosSample& x) { out.history.push_back(x); };
-        const py::gil_scoped_release unlocked;
-        out.result = phase::chaos(model, state, r);
-        return out;
+        IntegrateOptions o;
+        if (max_steps) o.max_steps = *max_steps;
+        return run_chaos(method_settings(model, method, step, tol), model, state, t0, t_end, o,
+                         spectrum, history);
       },
       py::arg("model"), py::arg("state"), py::arg("t_end"), py::kw_only(), py::arg("t0") = 0.0,
       py::arg("method") = py::none(), py::arg("step") = py::none(), py::arg("tol") = py::none(),
@@ -291,13 +279,6 @@ void bind_chaos(py::module_& m) {
 }
 
 // ---- section ------------------------------------------------------------------------------
-
-struct SectionOut {
-  std::vector<phase::Crossing> crossings;
-  std::vector<phase::SectionRun> runs;
-  Body body;
-  std::string surface;
-};
 
 void bind_section(py::module_& m) {
   using C = phase::Crossing;
@@ -333,15 +314,12 @@ void bind_section(py::module_& m) {
       .def_property_readonly("outcomes",
                              [](const SectionOut& s) {
                                std::vector<std::string> o;
-                               for (const auto& r : s.runs)
-                                 o.emplace_back(to_string(r.outcome.status));
+                               for (Status x : s.outcomes) o.emplace_back(to_string(x));
                                return o;
                              })
-      .def_property_readonly("max_surface_residual", [](const SectionOut& s) {
-        double r = 0;
-        for (const auto& x : s.runs) r = std::max(r, x.max_residual);
-        return r;
-      });
+      .def_readonly("stopped_by", &SectionOut::stopped_by,
+                    "crossings (every orbit), cap (a run without t_end hit max_steps) or t_end")
+      .def_readonly("max_surface_residual", &SectionOut::max_residual);
   m.def(
       "_section",
       [](const Model& model, const std::vector<State>& states, double t_end,
@@ -355,21 +333,16 @@ void bind_section(py::module_& m) {
           throw InputError("crossings: expected an integer >= 1, found " +
                            std::to_string(crossings));
         }
-        const MethodSettings s = method_settings(model, method, step, tol);
+        phase::SectionRequest q;
+        q.method = method_settings(model, method, step, tol);
         check_time_span(t0, t_end);
-        for (const State& x : states) validate(x);
-        IntegrateOptions o;
-        if (max_steps) o.max_steps = *max_steps;
-        SectionOut out{{}, {}, model.body(), sf.text};
-        const phase::SectionSettings settings{dir, crossings, false};
-        const phase::SurfaceFunction g(sf, model.body());
-        const py::gil_scoped_release unlocked;
-        for (std::size_t k = 0; k < states.size(); ++k) {
-          phase::IntegralsDrift drift;
-          out.runs.push_back(phase::section_orbit(s, model, g, settings, static_cast<int>(k),
-                                                  states[k], t0, t_end, o, out.crossings, drift));
-        }
-        return out;
+        q.surface = sf;
+        q.direction = dir;
+        q.max_crossings = crossings;
+        q.t0 = t0;
+        q.t_end = t_end;
+        if (max_steps) q.options.max_steps = *max_steps;
+        return run_sections(model, states, q);
       },
       py::arg("model"), py::arg("states"), py::arg("t_end"), py::kw_only(),
       py::arg("surface") = "gamma3 = 0", py::arg("crossings") = 1000, py::arg("direction") = "up",
@@ -494,6 +467,7 @@ void bind_analyses(py::module_& m) {
   bind_chaos(m);
   bind_section(m);
   bind_analytic(m);
+  bind_scenario_analyses(m);
 }
 
 }  // namespace newtop::python

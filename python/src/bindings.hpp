@@ -32,9 +32,11 @@ void bind_analyses(pybind11::module_& m);
 MethodSettings method_settings(const Model& model, const std::optional<std::string>& name,
                                std::optional<double> step, std::optional<double> tol);
 
-/// _run_command_line(): the command line in-process, for the per-subcommand functions of the
-/// package (command_line.cpp).
-void bind_command_line(pybind11::module_& m);
+/// _simulation_summary, _write_trajectory_csv (simulate.cpp).
+void bind_simulate(pybind11::module_& m);
+
+/// view(): the 3D page of a trajectory CSV (view.cpp).
+void bind_view(pybind11::module_& m);
 
 /// rotations and field on Python objects (fields.cpp).
 void bind_fields(pybind11::module_& m);

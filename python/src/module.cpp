@@ -18,9 +18,12 @@ PYBIND11_MODULE(_newtop, m) {
   newtop::python::bind_analyses(m);
   newtop::python::bind_fields(m);
   newtop::python::bind_sweep(m);
-  newtop::python::bind_command_line(m);
+  newtop::python::bind_simulate(m);
+  newtop::python::bind_view(m);
   newtop::python::bind_continuation(m);
   newtop::python::bind_orbit(m);
   newtop::python::bind_orbit_run(m);
   newtop::python::bind_orbit_analyses(m);
+  newtop::python::bind_orbit_phase(m);
+  newtop::python::bind_orbit_libration(m);
 }

@@ -37,4 +37,10 @@ void bind_orbit_run(pybind11::module_& m);
 /// The relative equilibria, their stability and the DeBra–Delp diagram (orbit_analyses.cpp).
 void bind_orbit_analyses(pybind11::module_& m);
 
+/// section and chaos on an OrbitScenario (orbit_phase.cpp).
+void bind_orbit_phase(pybind11::module_& m);
+
+/// The libration report (orbit_libration.cpp).
+void bind_orbit_libration(pybind11::module_& m);
+
 }  // namespace newtop::python

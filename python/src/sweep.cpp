@@ -20,12 +20,7 @@ namespace py = pybind11;
 namespace newtop::python {
 namespace {
 
-py::dict run(const std::string& text, const std::string& base_source, const std::string& base_text,
-             int threads) {
-  if (threads < 0) {
-    throw InputError("threads: expected 0 (all cores) or more, found " + std::to_string(threads));
-  }
-  const sweep::SweepFile s = sweep::make_sweep(text, base_source, base_text);
+py::dict run_file(const sweep::SweepFile& s, int threads) {
   sweep::RunOptions options;
   options.threads = threads;
   sweep::SweepRun r;
@@ -68,6 +63,24 @@ py::dict run(const std::string& text, const std::string& base_source, const std:
   return d;
 }
 
+void check_threads(int threads) {
+  if (threads < 0) {
+    throw InputError("threads: expected 0 (all cores) or more, found " + std::to_string(threads));
+  }
+}
+
+py::dict run(const std::string& text, const std::string& base_source, const std::string& base_text,
+             int threads) {
+  check_threads(threads);
+  return run_file(sweep::make_sweep(text, base_source, base_text), threads);
+}
+
+/// A sweep file on disk, read as `newtop sweep FILE` reads it.
+py::dict run_path(const std::string& path, int threads) {
+  check_threads(threads);
+  return run_file(sweep::load_sweep(path), threads);
+}
+
 }  // namespace
 
 void bind_sweep(py::module_& m) {
@@ -79,6 +92,8 @@ void bind_sweep(py::module_& m) {
         "A sweep's text (as a sweep file's) over the base scenario's text: points, failed, "
         "off_level, threads, quantities and results (one numpy array per axis and column, NaN "
         "where a point failed or a verdict is inconclusive; status a list).");
+  m.def("_sweep_file", &run_path, py::arg("path"), py::arg("threads") = 0,
+        "A sweep file (docs/sweep.md) as `newtop sweep FILE` reads it; the result of _sweep.");
 }
 
 }  // namespace newtop::python

@@ -93,6 +93,12 @@ py::dict run_dict(Rows rows, const Outcome& out, const MethodSettings& method) {
   d["rejected"] = out.rejected;
   d["method"] = method.name;
   d["step"] = method.step;
+  if (method_info(method.name).kind == MethodKind::adaptive) {
+    py::dict tol;
+    tol["abs"] = method.abs_tol;
+    tol["rel"] = method.rel_tol;
+    d["tolerance"] = tol;
+  }
   return d;
 }
 

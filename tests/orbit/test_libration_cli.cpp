@@ -7,6 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "newtop/orbit/libration_report.hpp"
 #include "newtop/orbit/spin_orbit.hpp"
 #include "orbit_problems.hpp"
 #include "support/cli.hpp"
@@ -143,6 +144,49 @@ TEST(LibrationCli, BadInputIsOneLineAndExitTwo) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_TRUE(r.out.empty()) << r.out;
   }
+}
+
+TEST(LibrationReport, ChainsTheResonancesAndTheSectionOfThePitchProblem) {
+  // The report of a planar start at periapsis (ν0 = 0) is the pitch problem's own pieces: each
+  // resonance's periodic solutions and the section of the start and of each spin start, bit for
+  // bit; bad input (iterates, a forced circular orbit) is refused before any work.
+  const Vec3 I(0.314, 0.474, 0.542);
+  const Body body = Body::from_principal(I, 1.0, Vec3::Zero());
+  const EllipticOrbit orbit = EllipticOrbit::from_mean_motion(1.0, 0.1, 0.0);
+  const double theta = 0.3, wz = 1.1;
+  const OrbitState x0{I.z() * wz * Vec3::UnitZ(), Vec3(std::cos(theta), -std::sin(theta), 0),
+                      Vec3::UnitZ()};
+  LibrationRequest request;
+  request.resonances = {resonance(1, 1), resonance(3, 2)};
+  request.spin = SpinStarts{1.0, 2.0, 2};
+  request.iterates = 20;
+  const LibrationReport r = libration_report(body, orbit, x0, request);
+  const PitchProblem problem = pitch_problem(body, orbit);
+  EXPECT_EQ(r.eccentricity, 0.1);
+  EXPECT_EQ(r.k, problem.k);
+  ASSERT_EQ(r.resonances.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto direct = periodic_solutions(problem, request.resonances[i]);
+    ASSERT_EQ(r.resonances[i].solutions.size(), direct.size());
+    for (std::size_t k = 0; k < direct.size(); ++k) {
+      EXPECT_EQ(r.resonances[i].solutions[k].dtheta0, direct[k].dtheta0);
+    }
+    EXPECT_FALSE(r.resonances[i].asymmetric_solutions);
+  }
+  ASSERT_EQ(r.starts.size(), 3u);
+  const Vec2 p0 = pitch_state(body, orbit, x0, 0.0, 1e-9);
+  EXPECT_EQ(r.starts[0].lyapunov, periapsis_section(problem, p0[0], p0[1], 20).lyapunov);
+  const SectionOrbit s2 = periapsis_section(problem, 0.0, dtheta_from_spin(0.1, 2.0), 20);
+  EXPECT_EQ(r.starts[2].lyapunov, s2.lyapunov);
+  EXPECT_EQ(r.starts[2].points, s2.points);
+  int chaotic = 0;
+  for (const SectionOrbit& s : r.starts) chaotic += s.chaotic;
+  EXPECT_EQ(r.chaotic_starts, chaotic);
+  request.iterates = 0;
+  EXPECT_THROW(libration_report(body, orbit, x0, request), InputError);
+  request.iterates = 20;
+  const CircularOrbit forced{1.0, 2.0};
+  EXPECT_THROW(libration_report(body, forced, x0, request), InputError);
 }
 
 }  // namespace

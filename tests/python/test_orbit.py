@@ -285,8 +285,10 @@ def test_the_docs_section_runs(monkeypatch):
         assert namespace["run"]["roll_pitch_yaw"].shape == (601, 3)
 
 
-def test_analyses_not_bound_for_orbits_say_so():
+def test_analyses_of_the_fixed_point_model_only_say_so_on_an_orbit():
+    # section and chaos have orbit forms (test_native_files.py); analytic, rotations,
+    # find_integrals and field are of the fixed-point model alone.
     sc = newtop.load_scenario(example("satellite_700km"))
-    for f in (newtop.chaos, newtop.section, newtop.analytic):
-        with pytest.raises(TypeError, match="not available on an OrbitModel"):
+    for f in (newtop.analytic, newtop.rotations, newtop.find_integrals):
+        with pytest.raises(TypeError, match="has no orbit form"):
             f(sc)
