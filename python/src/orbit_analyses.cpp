@@ -18,6 +18,7 @@
 #include "newtop/orbit/debra_delp.hpp"
 #include "newtop/orbit/lvlh.hpp"
 #include "newtop/orbit/orbit_equilibria.hpp"
+#include "newtop/orbit/orbit_reports.hpp"
 #include "orbit_model.hpp"
 
 namespace py = pybind11;
@@ -60,14 +61,6 @@ py::array_t<std::complex<double>> eigenvalues(const RelativeSpectrum& sp) {
 Mat3 lvlh_of(const RelativeEquilibrium& e) {
   return lvlh_to_body(OrbitState{Vec3::Zero(), e.gamma, e.normal});
 }
-
-/// The stability of one relative equilibrium with the state it was computed at.
-struct RelativeStability {
-  RelativeSpectrum spectrum;
-  OrbitState state;
-  Vec3 omega;
-  double jacobi = 0.0, residual = 0.0;
-};
 
 void bind_equilibria(py::module_& m) {
   using E = RelativeEquilibrium;
@@ -169,40 +162,13 @@ void bind_equilibria(py::module_& m) {
       py::arg("model"));
 }
 
-RelativeStability stability_of(const OrbitModel& model, std::optional<int> equilibrium,
-                               const std::optional<OrbitState>& state) {
-  const CircularOrbitModel& c = model.circular_model();
-  if (equilibrium.has_value() == state.has_value()) {
-    throw InputError("equilibrium, state: expected exactly one of them, found " +
-                     std::string(state ? "both" : "neither"));
-  }
-  OrbitState s;
-  if (equilibrium) {
-    // The K-th (1-based) of equilibria()'s list, at rest in the orbital frame.
-    const RelativeEquilibriumSet set = find_relative_equilibria(c);
-    const int n = static_cast<int>(set.equilibria.size());
-    if (*equilibrium < 1 || *equilibrium > n) {
-      throw InputError("equilibrium: expected 1 to " + std::to_string(n) + ", found " +
-                       std::to_string(*equilibrium));
-    }
-    const RelativeEquilibrium& e = set.equilibria[static_cast<std::size_t>(*equilibrium - 1)];
-    s = relative_rest_state(c, e.gamma, e.normal);
-  } else {
-    s = *state;
-  }
-  const double res = fixed_point_residual(c, s);
-  if (!(res <= kRelativeEquilibriumTolerance)) {
-    throw InputError(
-        "state: expected a relative equilibrium (relative residual of d(m, gamma, "
-        "normal)/dt <= " +
-        format_number(kRelativeEquilibriumTolerance) + "), found residual " + format_number(res) +
-        "; see newtop.equilibria");
-  }
-  return {relative_equilibrium_stability(c, s), s, omega(c.body(), s), jacobi_integral(c, s), res};
+RelativeStabilityReport stability_of(const OrbitModel& model, std::optional<int> equilibrium,
+                                     const std::optional<OrbitState>& state) {
+  return relative_stability(model.circular_model(), {equilibrium, state});
 }
 
 void bind_stability(py::module_& m) {
-  using R = RelativeStability;
+  using R = RelativeStabilityReport;
   py::class_<R>(m, "RelativeStability",
                 "The linear stability of a relative equilibrium (docs/orbit.md §7): "
                 "newtop.stability(orbit_model, equilibrium=K | state=x), as `newtop stability "
@@ -235,11 +201,6 @@ void bind_stability(py::module_& m) {
 
 using P = DebraDelpPoint;
 using Axis = std::tuple<double, double, int>;
-
-/// The points of a scan (a class of its own: a std::vector would convert to a list).
-struct DebraDelpDiagram {
-  std::vector<P> points;
-};
 
 void bind_debra_delp(py::module_& m) {
   using D = DebraDelpDiagram;
@@ -284,28 +245,19 @@ void bind_debra_delp(py::module_& m) {
       .def_property_readonly("counts",
                              [](const D& d) {
                                py::dict c;
-                               int n[3] = {0, 0, 0};
-                               for (const P& p : d.points) ++n[static_cast<int>(p.computed)];
-                               c["lagrange"] = n[0];
-                               c["debra_delp"] = n[1];
-                               c["unstable"] = n[2];
+                               c["lagrange"] = d.counts[0];
+                               c["debra_delp"] = d.counts[1];
+                               c["unstable"] = d.counts[2];
                                return c;
                              })
-      .def_property_readonly("disagreements_with_closed_form",
-                             [](const D& d) {
-                               int n = 0;
-                               for (const P& p : d.points)
-                                 n += !p.boundary && p.computed != p.closed_form;
-                               return n;
-                             })
+      .def_readonly("disagreements_with_closed_form", &D::disagreements_with_closed_form)
       .def("__len__", [](const D& d) { return d.points.size(); });
   m.def(
       "debra_delp",
       [](const Axis& k_R, const Axis& k_Y) {
         const py::gil_scoped_release unlocked;
-        return DebraDelpDiagram{debra_delp_scan(std::get<0>(k_R), std::get<1>(k_R),
-                                                std::get<2>(k_R), std::get<0>(k_Y),
-                                                std::get<1>(k_Y), std::get<2>(k_Y))};
+        return debra_delp_diagram({std::get<0>(k_R), std::get<1>(k_R), std::get<2>(k_R)},
+                                  {std::get<0>(k_Y), std::get<1>(k_Y), std::get<2>(k_Y)});
       },
       py::arg("k_R") = Axis{-0.99, 0.99, 67}, py::arg("k_Y") = Axis{-0.99, 0.99, 67},
       "The DeBra-Delp diagram on a grid (LO, HI, N) of each ratio, ends included (the command "
