@@ -7,6 +7,7 @@
 #include <string>
 
 #include "newtop/integrate/method_settings.hpp"
+#include "newtop/model/integrals.hpp"
 #include "newtop/model/model.hpp"
 
 namespace newtop::python {
@@ -31,6 +32,9 @@ void bind_analyses(pybind11::module_& m);
 /// a tolerance (taylor on the quadratic field, dop853 on the others); one of step and tol.
 MethodSettings method_settings(const Model& model, const std::optional<std::string>& name,
                                std::optional<double> step, std::optional<double> tol);
+
+/// {"energy", "area", "geometric"[, "brun"][, "lagrange"]} of the integrals (model.cpp).
+pybind11::dict integrals_dict(const IntegralValues& v);
 
 /// _simulation_summary, _write_trajectory_csv (simulate.cpp).
 void bind_simulate(pybind11::module_& m);

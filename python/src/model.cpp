@@ -16,7 +16,6 @@
 namespace py = pybind11;
 
 namespace newtop::python {
-namespace {
 
 py::dict integrals_dict(const IntegralValues& v) {
   py::dict d;
@@ -27,6 +26,8 @@ py::dict integrals_dict(const IntegralValues& v) {
   if (v.lagrange) d["lagrange"] = *v.lagrange;
   return d;
 }
+
+namespace {
 
 void bind_body(py::module_& m) {
   py::class_<Body>(m, "Body",

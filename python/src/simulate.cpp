@@ -37,16 +37,6 @@ void check_rows(const Rows& t, const Rows& m, const Rows& gamma) {
   }
 }
 
-py::dict integral_dict(const IntegralValues& v) {
-  py::dict d;
-  d["energy"] = v.energy;
-  d["area"] = v.area;
-  d["geometric"] = v.geometric;
-  if (v.brun) d["brun"] = *v.brun;
-  if (v.lagrange) d["lagrange"] = *v.lagrange;
-  return d;
-}
-
 /// The drift of the integrals over the rows (the first is the start) and the Casimir check.
 py::dict summary(const Model& model, const Rows& t, const Rows& m, const Rows& gamma) {
   check_rows(t, m, gamma);
@@ -63,9 +53,9 @@ py::dict summary(const Model& model, const Rows& t, const Rows& m, const Rows& g
   casimir["threshold"] = CasimirDrift::kThreshold;
   casimir["exceeded"] = c.exceeded();
   py::dict d;
-  d["initial"] = integral_dict(drift.initial);
-  d["final"] = integral_dict(integrals(model, row_state(m, gamma, t.shape(0) - 1)));
-  d["max_abs_drift"] = integral_dict(drift.max_drift);
+  d["initial"] = integrals_dict(drift.initial);
+  d["final"] = integrals_dict(integrals(model, row_state(m, gamma, t.shape(0) - 1)));
+  d["max_abs_drift"] = integrals_dict(drift.max_drift);
   d["casimir_drift"] = casimir;
   return d;
 }
