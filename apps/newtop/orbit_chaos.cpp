@@ -8,6 +8,7 @@
 
 #include "command.hpp"
 #include "interrupt.hpp"
+#include "newtop/io/chaos_output.hpp"
 #include "newtop/io/json.hpp"
 #include "newtop/io/output.hpp"
 #include "orbit_commands.hpp"
@@ -15,18 +16,6 @@
 #include "summary.hpp"
 
 namespace newtop::app {
-namespace {
-
-void write_row(std::ostream& os, const phase::ChaosSample& s) {
-  os << format_number(s.t) << ',' << format_number(s.lyapunov_max) << ','
-     << format_number(s.megno_y) << ',' << format_number(s.megno) << ',' << format_number(s.fli);
-  if (s.spectrum) {
-    for (double v : *s.spectrum) os << ',' << format_number(v);
-  }
-  os << '\n';
-}
-
-}  // namespace
 
 int orbit_chaos_command(const OrbitChaosArgs& a) {
   if (a.split) {
@@ -50,10 +39,8 @@ int orbit_chaos_command(const OrbitChaosArgs& a) {
   std::unique_ptr<io::AtomicFile> file;
   if (a.out) {
     file = std::make_unique<io::AtomicFile>(*a.out);
-    file->stream() << "t,lyapunov_max,megno_y,megno,fli";
-    if (a.spectrum) file->stream() << ",lambda1,lambda2,lambda3,lambda4,lambda5,lambda6";
-    file->stream() << '\n';
-    st.history = [&](const phase::ChaosSample& s) { write_row(file->stream(), s); };
+    io::write_chaos_csv_header(file->stream(), a.spectrum);
+    st.history = [&](const phase::ChaosSample& s) { io::write_chaos_csv_row(file->stream(), s); };
   }
   const InterruptGuard guard;
   OrbitChaosResult r;
