@@ -69,7 +69,7 @@ bool simd_path_available(SimdPath path) {
       return true;
 #ifdef NEWTOP_ENSEMBLE_X86
     case SimdPath::avx2:
-      return __builtin_cpu_supports("avx2");
+      return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
     case SimdPath::avx512:
       return __builtin_cpu_supports("avx512f");
 #endif

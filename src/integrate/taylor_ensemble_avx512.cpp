@@ -4,14 +4,21 @@
 #include "taylor_ensemble_kernel.hpp"
 
 #if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+
 namespace newtop::detail {
 namespace {
 
 using V = double __attribute__((vector_size(64)));
 constexpr int kLanes = 8;
 
+// a·b + c rounded once, lane by lane.
+struct Fma {
+  static V fma(V a, V b, V c) { return _mm512_fmadd_pd(a, b, c); }
+};
+
 void expand(const double* consts, const double* x, int order, double* series) {
-  taylor_ensemble_simd::expand<V, kLanes>(consts, x, order, series);
+  taylor_ensemble_simd::expand<V, kLanes, Fma>(consts, x, order, series);
 }
 void sum(const double* series, int order, const double* h, double* out) {
   taylor_ensemble_simd::sum<V, kLanes>(series, order, h, out);
@@ -22,7 +29,7 @@ unsigned advance(const double* series, int order, const double* h, unsigned lane
 
 void expand_tangent(const double* consts, const double* series, const double* v, int order,
                     double* tangent) {
-  taylor_ensemble_simd::expand_tangent<V, kLanes>(consts, series, v, order, tangent);
+  taylor_ensemble_simd::expand_tangent<V, kLanes, Fma>(consts, series, v, order, tangent);
 }
 
 void norms(const double* series, const double* tangent, int order, double* out) {

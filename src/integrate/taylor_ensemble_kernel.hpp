@@ -5,7 +5,8 @@
 // taylor_lanes::sum_series for one component after another, in their order: where taylor.cpp holds
 // the components (x, y, z) in lanes and rotates them, (y, z, x) and (z, x, y), these kernels hold
 // component c + 1 and c + 2 (mod 3) in registers of their own. Compiled with -ffp-contract=off
-// (CMakeLists.txt), so that no a·b + c is fused: the same bits as the scalar recurrences.
+// (CMakeLists.txt), so that no a·b + c is fused but those the recurrences fuse explicitly (F::fma,
+// as taylor.cpp's O::fma): the same bits as the scalar recurrences.
 //
 // Layouts, for L lanes: the constants (kConstants rows: 1/I, k, b, d_spin, d_field, three
 // components each) at consts[(3 q + c) L + l]; a state (m, γ) at x[c L + l], c = 0..5; the
@@ -14,6 +15,7 @@
 #include <array>
 #include <cstddef>
 #include <cstring>
+#include <type_traits>
 
 #include "taylor_math.hpp"
 
@@ -69,39 +71,37 @@ template <class V>
   std::memcpy(p, &v, sizeof v);
 }
 
-// The sums of one order (taylor.cpp: P, Rs, S, T), one vector per component.
+// The sums of one order and one component c (taylor.cpp: P, Rs, S, T of c).
 template <class V>
 struct Sums {
-  V p[3]{}, rs[3]{}, s[3]{}, t[3]{};
+  V p{}, rs{}, s{}, t{};
 };
 
-// taylor.cpp's pair(a, c): the terms j and n − j of the Cauchy sums.
-template <class V>
+// taylor.cpp's pair(a, c) for the component c (its neighbours c1 = c + 1, c2 = c + 2 mod 3): the
+// terms j and n − j of the Cauchy sums, each product added by a fused multiply-add (F::fma).
+template <class F, class V>
 [[gnu::always_inline]] inline void pair(const V (&wa)[3], const V (&ga)[3], const V (&wc)[3],
-                                        const V (&gc)[3], Sums<V>& z) {
-  for (int c = 0; c < 3; ++c) {
-    const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-    z.p[c] += wa[c1] * wc[c2] + wc[c1] * wa[c2];
-    z.rs[c] += ga[c1] * gc[c2] + gc[c1] * ga[c2];
-    z.s[c] += ga[c1] * wc[c2] + gc[c1] * wa[c2];
-    z.t[c] += ga[c2] * wc[c1] + gc[c2] * wa[c1];
-  }
+                                        const V (&gc)[3], int c1, int c2, Sums<V>& z) {
+  z.p = F::fma(wc[c1], wa[c2], F::fma(wa[c1], wc[c2], z.p));
+  z.rs = F::fma(gc[c1], ga[c2], F::fma(ga[c1], gc[c2], z.rs));
+  z.s = F::fma(gc[c1], wa[c2], F::fma(ga[c1], wc[c2], z.s));
+  z.t = F::fma(gc[c2], wa[c1], F::fma(ga[c2], wc[c1], z.t));
 }
 
-// taylor.cpp's single(a): the term j = n − j.
-template <class V>
-[[gnu::always_inline]] inline void single(const V (&w)[3], const V (&g)[3], Sums<V>& z) {
-  for (int c = 0; c < 3; ++c) {
-    const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-    z.p[c] += w[c1] * w[c2];
-    z.rs[c] += g[c1] * g[c2];
-    z.s[c] += g[c1] * w[c2];
-    z.t[c] += g[c2] * w[c1];
-  }
+// taylor.cpp's single(a) for the component c: the term j = n − j.
+template <class F, class V>
+[[gnu::always_inline]] inline void single(const V (&w)[3], const V (&g)[3], int c1, int c2,
+                                          Sums<V>& z) {
+  z.p = F::fma(w[c1], w[c2], z.p);
+  z.rs = F::fma(g[c1], g[c2], z.rs);
+  z.s = F::fma(g[c1], w[c2], z.s);
+  z.t = F::fma(g[c2], w[c1], z.t);
 }
 
 // The coefficients 0..order of the series through x (taylor.cpp, expand_lanes without attitude).
-template <class V, int L>
+// One component after another (eight sums in registers, not 24), each sum over j in taylor.cpp's
+// order: the same bits. F::fma(a, b, c): a·b + c rounded once, lane by lane.
+template <class V, int L, class F>
 void expand(const double* consts, const double* x, int order, double* series) {
   V inv_i[3], k[3], b[3], d_spin[3], d_field[3];
   for (int c = 0; c < 3; ++c) {
@@ -120,46 +120,45 @@ void expand(const double* consts, const double* x, int order, double* series) {
     w[0][c] = (m - k[c]) * inv_i[c];
   }
   for (int n = 0; n < order; ++n) {
-    Sums<V> a, bsum;  // the two interleaved halves (P and Pb in taylor.cpp)
     const int last_pair = (n - 1) / 2;
-    int j = 1;
-    for (; j + 1 <= last_pair; j += 2) {
-      pair(w[j], g[j], w[n - j], g[n - j], a);
-      pair(w[j + 1], g[j + 1], w[n - j - 1], g[n - j - 1], bsum);
-    }
-    if (j == last_pair) pair(w[j], g[j], w[n - j], g[n - j], a);
-    if (n % 2 == 0 && n > 0) single(w[n / 2], g[n / 2], bsum);
-    for (int c = 0; c < 3; ++c) {
-      a.p[c] += bsum.p[c];
-      a.rs[c] += bsum.rs[c];
-      a.s[c] += bsum.s[c];
-      a.t[c] += bsum.t[c];
-    }
-    if (n == 0) {
-      single(w[0], g[0], a);
-    } else {
-      pair(w[0], g[0], w[n], g[n], a);
-    }
     const double inv = kInverse[static_cast<std::size_t>(n)];
     double* next = series + 6 * (n + 1) * L;
-    for (int c = 0; c < 3; ++c) {
-      const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+    auto component = [&](auto c_) {  // c a constant: its neighbours' indices fixed
+      constexpr int c = decltype(c_)::value, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+      Sums<V> a, bsum;  // the two interleaved halves (P and Pb in taylor.cpp)
+      int j = 1;
+      for (; j + 1 <= last_pair; j += 2) {
+        pair<F>(w[j], g[j], w[n - j], g[n - j], c1, c2, a);
+        pair<F>(w[j + 1], g[j + 1], w[n - j - 1], g[n - j - 1], c1, c2, bsum);
+      }
+      if (j == last_pair) pair<F>(w[j], g[j], w[n - j], g[n - j], c1, c2, a);
+      if (n % 2 == 0 && n > 0) single<F>(w[n / 2], g[n / 2], c1, c2, bsum);
+      a.p += bsum.p;
+      a.rs += bsum.rs;
+      a.s += bsum.s;
+      a.t += bsum.t;
+      if (n == 0) {
+        single<F>(w[0], g[0], c1, c2, a);
+      } else {
+        pair<F>(w[0], g[0], w[n], g[n], c1, c2, a);
+      }
       const V linear =
           (k[c1] * w[n][c2] - k[c2] * w[n][c1]) + (g[n][c1] * b[c2] - g[n][c2] * b[c1]);
-      const V m_next = (d_spin[c] * a.p[c] + d_field[c] * a.rs[c] + linear) * inv;
+      const V m_next = (d_spin[c] * a.p + d_field[c] * a.rs + linear) * inv;
       store(next + c * L, m_next);
       w[n + 1][c] = m_next * inv_i[c];
-    }
-    for (int c = 0; c < 3; ++c) {
-      g[n + 1][c] = (a.s[c] - a.t[c]) * inv;
+      g[n + 1][c] = (a.s - a.t) * inv;
       store(next + (3 + c) * L, g[n + 1][c]);
-    }
+    };
+    component(std::integral_constant<int, 0>{});
+    component(std::integral_constant<int, 1>{});
+    component(std::integral_constant<int, 2>{});
   }
 }
 
 // The coefficients 0..order of one tangent vector v along the state's series (taylor_tangent.cpp,
 // expand_tangent_lanes with one column): the state's ω^[n] formed again from its m^[n] as there.
-template <class V, int L>
+template <class V, int L, class F>
 void expand_tangent(const double* consts, const double* series, const double* v, int order,
                     double* tangent) {
   V inv_i[3], k[3], b[3], d_spin[3], d_field[3];
@@ -185,43 +184,52 @@ void expand_tangent(const double* consts, const double* series, const double* v,
     store(tangent + c * L, m);
     store(tangent + (3 + c) * L, dg[0][c]);
   }
-  // taylor_tangent.cpp's add(δa, b, a, δb).
+  // taylor_tangent.cpp's add(δa, b, a, δb) for the component c (neighbours c1, c2).
   auto add = [](const V(&da_w)[3], const V(&da_g)[3], const V(&xb_w)[3], const V(&xb_g)[3],
-                const V(&xa_w)[3], const V(&xa_g)[3], const V(&db_w)[3], const V(&db_g)[3],
-                Sums<V>& z) {
-    for (int c = 0; c < 3; ++c) {
-      const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-      z.p[c] += da_w[c1] * xb_w[c2] + xa_w[c1] * db_w[c2];
-      z.rs[c] += da_g[c1] * xb_g[c2] + xa_g[c1] * db_g[c2];
-      z.s[c] += da_g[c1] * xb_w[c2] + xa_g[c1] * db_w[c2];
-      z.t[c] += da_g[c2] * xb_w[c1] + xa_g[c2] * db_w[c1];
-    }
+                const V(&xa_w)[3], const V(&xa_g)[3], const V(&db_w)[3], const V(&db_g)[3], int c1,
+                int c2, Sums<V>& z) {
+    z.p = F::fma(xa_w[c1], db_w[c2], F::fma(da_w[c1], xb_w[c2], z.p));
+    z.rs = F::fma(xa_g[c1], db_g[c2], F::fma(da_g[c1], xb_g[c2], z.rs));
+    z.s = F::fma(xa_g[c1], db_w[c2], F::fma(da_g[c1], xb_w[c2], z.s));
+    z.t = F::fma(xa_g[c2], db_w[c1], F::fma(da_g[c2], xb_w[c1], z.t));
   };
+  // One component after another (eight sums in registers, not 24), each sum over j in
+  // taylor_tangent.cpp's order: the same bits.
   for (int n = 0; n < order; ++n) {
-    Sums<V> z;
-    if (n == 0) {
-      add(dw[0], dg[0], xw[0], xg[0], xw[0], xg[0], dw[0], dg[0], z);
-    } else {
-      for (int j = 1; j < n; ++j)
-        add(dw[j], dg[j], xw[n - j], xg[n - j], xw[j], xg[j], dw[n - j], dg[n - j], z);
-      add(dw[0], dg[0], xw[n], xg[n], xw[n], xg[n], dw[0], dg[0], z);
-      add(dw[n], dg[n], xw[0], xg[0], xw[0], xg[0], dw[n], dg[n], z);
-    }
     const double inv = kInverse[static_cast<std::size_t>(n)];
     double* next = tangent + 6 * (n + 1) * L;
-    for (int c = 0; c < 3; ++c) {
-      const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-      const V dm =
-          (d_spin[c] * z.p[c] + d_field[c] * z.rs[c] + (k[c1] * dw[n][c2] - k[c2] * dw[n][c1]) +
-           (dg[n][c1] * b[c2] - dg[n][c2] * b[c1])) *
-          inv;
+    auto component = [&](auto c_) {  // c a constant: its neighbours' indices fixed
+      constexpr int c = decltype(c_)::value, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+      Sums<V> z, zb;  // the two interleaved halves of taylor_tangent.cpp (odd and even j)
+      if (n == 0) {
+        add(dw[0], dg[0], xw[0], xg[0], xw[0], xg[0], dw[0], dg[0], c1, c2, z);
+      } else {
+        int j = 1;
+        for (; j + 1 < n; j += 2) {
+          add(dw[j], dg[j], xw[n - j], xg[n - j], xw[j], xg[j], dw[n - j], dg[n - j], c1, c2, z);
+          add(dw[j + 1], dg[j + 1], xw[n - j - 1], xg[n - j - 1], xw[j + 1], xg[j + 1],
+              dw[n - j - 1], dg[n - j - 1], c1, c2, zb);
+        }
+        if (j < n)
+          add(dw[j], dg[j], xw[n - j], xg[n - j], xw[j], xg[j], dw[n - j], dg[n - j], c1, c2, z);
+        z.p += zb.p;
+        z.rs += zb.rs;
+        z.s += zb.s;
+        z.t += zb.t;
+        add(dw[0], dg[0], xw[n], xg[n], xw[n], xg[n], dw[0], dg[0], c1, c2, z);
+        add(dw[n], dg[n], xw[0], xg[0], xw[0], xg[0], dw[n], dg[n], c1, c2, z);
+      }
+      const V dm = (d_spin[c] * z.p + d_field[c] * z.rs + (k[c1] * dw[n][c2] - k[c2] * dw[n][c1]) +
+                    (dg[n][c1] * b[c2] - dg[n][c2] * b[c1])) *
+                   inv;
       store(next + c * L, dm);
       dw[n + 1][c] = dm * inv_i[c];
-    }
-    for (int c = 0; c < 3; ++c) {
-      dg[n + 1][c] = (z.s[c] - z.t[c]) * inv;
+      dg[n + 1][c] = (z.s - z.t) * inv;
       store(next + (3 + c) * L, dg[n + 1][c]);
-    }
+    };
+    component(std::integral_constant<int, 0>{});
+    component(std::integral_constant<int, 1>{});
+    component(std::integral_constant<int, 2>{});
   }
 }
 

@@ -1,6 +1,8 @@
 // The Taylor ensemble's kernel for any CPU: pairs of doubles (SSE2 on x86-64, plain code
 // elsewhere). Compiled with -ffp-contract=off (CMakeLists.txt).
 
+#include <cmath>
+
 #include "taylor_ensemble_kernel.hpp"
 
 namespace newtop::detail {
@@ -9,8 +11,14 @@ namespace {
 using V = double __attribute__((vector_size(16)));
 constexpr int kLanes = 2;
 
+// a·b + c rounded once, lane by lane (std::fma: the processor's instruction where it has one, the
+// C library's exact emulation elsewhere).
+struct Fma {
+  static V fma(V a, V b, V c) { return V{std::fma(a[0], b[0], c[0]), std::fma(a[1], b[1], c[1])}; }
+};
+
 void expand(const double* consts, const double* x, int order, double* series) {
-  taylor_ensemble_simd::expand<V, kLanes>(consts, x, order, series);
+  taylor_ensemble_simd::expand<V, kLanes, Fma>(consts, x, order, series);
 }
 void sum(const double* series, int order, const double* h, double* out) {
   taylor_ensemble_simd::sum<V, kLanes>(series, order, h, out);
@@ -21,7 +29,7 @@ unsigned advance(const double* series, int order, const double* h, unsigned lane
 
 void expand_tangent(const double* consts, const double* series, const double* v, int order,
                     double* tangent) {
-  taylor_ensemble_simd::expand_tangent<V, kLanes>(consts, series, v, order, tangent);
+  taylor_ensemble_simd::expand_tangent<V, kLanes, Fma>(consts, series, v, order, tangent);
 }
 
 void norms(const double* series, const double* tangent, int order, double* out) {

@@ -94,6 +94,15 @@ struct LaneOps<Pair4> {
   [[gnu::always_inline]] static Pair4 splat3(double w) { return {V2{w, w}, V2{w, 0.0}}; }
 };
 
+// a·b + c rounded once, lane by lane (std::fma: the processor's instruction where it has one, the
+// C library's exact emulation elsewhere; the same bits either way).
+struct PairFma {
+  static Pair4 fma(const Pair4& a, const Pair4& b, const Pair4& c) {
+    return {V2{std::fma(a.lo[0], b.lo[0], c.lo[0]), std::fma(a.lo[1], b.lo[1], c.lo[1])},
+            V2{std::fma(a.hi[0], b.hi[0], c.hi[0]), std::fma(a.hi[1], b.hi[1], c.hi[1])}};
+  }
+};
+
 // The max norm of the first `lanes` lanes (NaN propagates).
 inline double norm_inf(const Lanes& a, int lanes) {
   double n = 0.0;

@@ -50,7 +50,8 @@ enum class SimdPath { portable, avx2, avx512 };
 
 /// "portable", "avx2", "avx512".
 std::string_view simd_path_name(SimdPath path);
-/// Whether this build has the path and this CPU can run it (portable: always).
+/// Whether this build has the path and this CPU can run it (portable: always; avx2: AVX2 and FMA;
+/// avx512: AVX-512F).
 bool simd_path_available(SimdPath path);
 /// The widest available path.
 SimdPath best_simd_path();
