@@ -67,9 +67,12 @@ void remove_open_temporaries() noexcept {
 AtomicFile::AtomicFile(std::string path, std::span<const std::string> inputs)
     : path_(std::move(path)), tmp_(path_ + ".partial-" + std::to_string(::getpid())) {
   check_output_path(path_, inputs);
+  enlist(tmp_.c_str());  // before the file exists: a signal from its creation on removes it
   out_.open(tmp_, std::ios::binary | std::ios::trunc);
-  if (!out_) throw InputError(path_ + ": cannot open the output file for writing");
-  enlist(tmp_.c_str());
+  if (!out_) {
+    delist(tmp_.c_str());
+    throw InputError(path_ + ": cannot open the output file for writing");
+  }
 }
 
 AtomicFile::~AtomicFile() {
