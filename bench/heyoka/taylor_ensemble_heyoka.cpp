@@ -190,6 +190,7 @@ int main(int argc, char** argv) {
                 std::string(newtop::simd_path_name(newtop::best_simd_path())).c_str(), lanes);
   }
   if (which.find('a') != std::string::npos) run_regime(generic(), rounds, lanes, tangent);
-  if (which.find('b') != std::string::npos) run_regime(fast_spin(1e-3, "b3"), rounds, lanes, tangent);
+  if (which.find('b') != std::string::npos)
+    run_regime(fast_spin(1e-3, "b3"), rounds, lanes, tangent);
   if (which.find('c') != std::string::npos) run_regime(libration(), rounds, lanes, tangent);
 }
