@@ -7,6 +7,9 @@
 //   (default 64); seconds: the least CPU time spent on each measurement (default 0.3); paths: the
 //   ensembles' SIMD paths to time, names joined by commas (default all available; the scalar run
 //   is always timed, once).
+// Run: build/bench/bench_taylor_steps [regime] [tol] [N] [seconds] [paths] tangent
+//   the ensembles' runs with one tangent vector each (TaylorEnsemble::integrate_tangent, no
+//   observer), per step of those runs.
 
 #include <cstdio>
 #include <cstdlib>
@@ -38,6 +41,7 @@ int main(int argc, char** argv) {
   const std::size_t n = argc > 3 ? std::strtoul(argv[3], nullptr, 10) : 64;
   const double seconds = argc > 4 ? std::atof(argv[4]) : 0.3;
   const std::string paths = argc > 5 ? argv[5] : "portable,avx2,avx512";
+  const bool tangent = argc > 6 && std::string(argv[6]) == "tangent";
   const Regime r = which == "a" ? generic() : which == "b" ? fast_spin(1e-3, "b3") : libration();
   Outcome scalar;
   const double cpu = cpu_per_call(paths == "none" ? seconds : 0.05, [&] {
@@ -57,6 +61,19 @@ int main(int argc, char** argv) {
     }
     TaylorEnsemble e(tol, tol, path);
     std::vector<Outcome> out;
+    if (tangent) {
+      const std::vector<TangentVector> v0{phase::initial_tangent(1).col(0)};
+      const double c =
+          cpu_per_call(seconds,
+                       [&] { out = e.integrate_tangent(models, x, v0, 0.0, r.T, {}, {}); }) /
+          static_cast<double>(n);
+      std::printf(
+          "%-10s %10.1f ns per step with one tangent vector (%lld steps), %9.4f ms per "
+          "trajectory\n",
+          std::string(simd_path_name(path)).c_str(), 1e9 * c / static_cast<double>(out[0].steps),
+          static_cast<long long>(out[0].steps), 1e3 * c);
+      continue;
+    }
     const double c = cpu_per_call(seconds, [&] { out = e.integrate(models, x, 0.0, r.T); }) /
                      static_cast<double>(n);
     const bool same = out[0].state.m == scalar.state.m && out[0].state.gamma == scalar.state.gamma;

@@ -156,8 +156,21 @@ void expand(const double* consts, const double* x, int order, double* series) {
   }
 }
 
-// The coefficients 0..order of one tangent vector v along the state's series (taylor_tangent.cpp,
-// expand_tangent_lanes with one column): the state's ω^[n] formed again from its m^[n] as there.
+// Holds an AVX-512 value in a register (an empty asm that the compiler must assume reads and
+// changes it): the compiler then does not fold a value used twice into two loads from memory,
+// which made the tangent's sums wait on the loads. With AVX-512's 32 registers only: AVX2's 16
+// cannot hold the sixteen operands and the eight sums.
+template <class V>
+[[gnu::always_inline]] inline V pinned(V v) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  if constexpr (sizeof(V) == 64) asm("" : "+v"(v));
+#endif
+  return v;
+}
+
+// The coefficients 0..order of one tangent vector v along the state's series
+// (taylor_tangent_lanes.hpp, expand_tangent_lanes with one column): the state's ω^[n] formed again
+// from its m^[n] as there.
 template <class V, int L, class F>
 void expand_tangent(const double* consts, const double* series, const double* v, int order,
                     double* tangent) {
@@ -184,7 +197,7 @@ void expand_tangent(const double* consts, const double* series, const double* v,
     store(tangent + c * L, m);
     store(tangent + (3 + c) * L, dg[0][c]);
   }
-  // taylor_tangent.cpp's add(δa, b, a, δb) for the component c (neighbours c1, c2).
+  // taylor_tangent_lanes.hpp's add(δa, b, a, δb) for the component c (neighbours c1, c2).
   auto add = [](const V(&da_w)[3], const V(&da_g)[3], const V(&xb_w)[3], const V(&xb_g)[3],
                 const V(&xa_w)[3], const V(&xa_g)[3], const V(&db_w)[3], const V(&db_g)[3], int c1,
                 int c2, Sums<V>& z) {
@@ -193,43 +206,67 @@ void expand_tangent(const double* consts, const double* series, const double* v,
     z.s = F::fma(xa_g[c1], db_w[c2], F::fma(da_g[c1], xb_w[c2], z.s));
     z.t = F::fma(xa_g[c2], db_w[c1], F::fma(da_g[c2], xb_w[c1], z.t));
   };
-  // One component after another (eight sums in registers, not 24), each sum over j in
-  // taylor_tangent.cpp's order: the same bits.
+  // One component after another (eight sums in registers, not 24): the terms j and n − j together
+  // (their sixteen operands loaded once for the sixteen products), each sum over j in
+  // taylor_tangent_lanes.hpp's order: the same bits.
   for (int n = 0; n < order; ++n) {
     const double inv = kInverse[static_cast<std::size_t>(n)];
     double* next = tangent + 6 * (n + 1) * L;
+    Sums<V> z[3];
     auto component = [&](auto c_) {  // c a constant: its neighbours' indices fixed
       constexpr int c = decltype(c_)::value, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-      Sums<V> z, zb;  // the two interleaved halves of taylor_tangent.cpp (odd and even j)
+      Sums<V>& za = z[c];
       if (n == 0) {
-        add(dw[0], dg[0], xw[0], xg[0], xw[0], xg[0], dw[0], dg[0], c1, c2, z);
-      } else {
-        int j = 1;
-        for (; j + 1 < n; j += 2) {
-          add(dw[j], dg[j], xw[n - j], xg[n - j], xw[j], xg[j], dw[n - j], dg[n - j], c1, c2, z);
-          add(dw[j + 1], dg[j + 1], xw[n - j - 1], xg[n - j - 1], xw[j + 1], xg[j + 1],
-              dw[n - j - 1], dg[n - j - 1], c1, c2, zb);
-        }
-        if (j < n)
-          add(dw[j], dg[j], xw[n - j], xg[n - j], xw[j], xg[j], dw[n - j], dg[n - j], c1, c2, z);
-        z.p += zb.p;
-        z.rs += zb.rs;
-        z.s += zb.s;
-        z.t += zb.t;
-        add(dw[0], dg[0], xw[n], xg[n], xw[n], xg[n], dw[0], dg[0], c1, c2, z);
-        add(dw[n], dg[n], xw[0], xg[0], xw[0], xg[0], dw[n], dg[n], c1, c2, z);
+        add(dw[0], dg[0], xw[0], xg[0], xw[0], xg[0], dw[0], dg[0], c1, c2, za);
+        return;
       }
-      const V dm = (d_spin[c] * z.p + d_field[c] * z.rs + (k[c1] * dw[n][c2] - k[c2] * dw[n][c1]) +
-                    (dg[n][c1] * b[c2] - dg[n][c2] * b[c1])) *
-                   inv;
-      store(next + c * L, dm);
-      dw[n + 1][c] = dm * inv_i[c];
-      dg[n + 1][c] = (z.s - z.t) * inv;
-      store(next + (3 + c) * L, dg[n + 1][c]);
+      Sums<V> zb;
+      const int last_pair = (n - 1) / 2;
+      for (int j = 1; j <= last_pair; ++j) {
+        // The sixteen operands, each used twice: held in registers, not loaded twice.
+        const V dj_w1 = pinned(dw[j][c1]), dj_w2 = pinned(dw[j][c2]), dj_g1 = pinned(dg[j][c1]),
+                dj_g2 = pinned(dg[j][c2]), dn_w1 = pinned(dw[n - j][c1]),
+                dn_w2 = pinned(dw[n - j][c2]), dn_g1 = pinned(dg[n - j][c1]),
+                dn_g2 = pinned(dg[n - j][c2]), xj_w1 = pinned(xw[j][c1]), xj_w2 = pinned(xw[j][c2]),
+                xj_g1 = pinned(xg[j][c1]), xj_g2 = pinned(xg[j][c2]), xn_w1 = pinned(xw[n - j][c1]),
+                xn_w2 = pinned(xw[n - j][c2]), xn_g1 = pinned(xg[n - j][c1]),
+                xn_g2 = pinned(xg[n - j][c2]);
+        // add(δa = δ^[j], b = x^[n−j], a = x^[j], δb = δ^[n−j]) into za, and the term n − j into
+        // zb.
+        za.p = F::fma(xj_w1, dn_w2, F::fma(dj_w1, xn_w2, za.p));
+        za.rs = F::fma(xj_g1, dn_g2, F::fma(dj_g1, xn_g2, za.rs));
+        za.s = F::fma(xj_g1, dn_w2, F::fma(dj_g1, xn_w2, za.s));
+        za.t = F::fma(xj_g2, dn_w1, F::fma(dj_g2, xn_w1, za.t));
+        zb.p = F::fma(xn_w1, dj_w2, F::fma(dn_w1, xj_w2, zb.p));
+        zb.rs = F::fma(xn_g1, dj_g2, F::fma(dn_g1, xj_g2, zb.rs));
+        zb.s = F::fma(xn_g1, dj_w2, F::fma(dn_g1, xj_w2, zb.s));
+        zb.t = F::fma(xn_g2, dj_w1, F::fma(dn_g2, xj_w1, zb.t));
+      }
+      if (n % 2 == 0) {
+        const int h = n / 2;
+        add(dw[h], dg[h], xw[h], xg[h], xw[h], xg[h], dw[h], dg[h], c1, c2, zb);
+      }
+      za.p += zb.p;
+      za.rs += zb.rs;
+      za.s += zb.s;
+      za.t += zb.t;
+      add(dw[0], dg[0], xw[n], xg[n], xw[n], xg[n], dw[0], dg[0], c1, c2, za);
+      add(dw[n], dg[n], xw[0], xg[0], xw[0], xg[0], dw[n], dg[n], c1, c2, za);
     };
     component(std::integral_constant<int, 0>{});
     component(std::integral_constant<int, 1>{});
     component(std::integral_constant<int, 2>{});
+    for (int c = 0; c < 3; ++c) {
+      const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+      const V dm =
+          (d_spin[c] * z[c].p + d_field[c] * z[c].rs + (k[c1] * dw[n][c2] - k[c2] * dw[n][c1]) +
+           (dg[n][c1] * b[c2] - dg[n][c2] * b[c1])) *
+          inv;
+      store(next + c * L, dm);
+      dw[n + 1][c] = dm * inv_i[c];
+      dg[n + 1][c] = (z[c].s - z[c].t) * inv;
+      store(next + (3 + c) * L, dg[n + 1][c]);
+    }
   }
 }
 

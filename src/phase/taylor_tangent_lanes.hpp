@@ -47,8 +47,9 @@ template <class L, class F>
       // Σ_j δa^[j] b^[n−j] + a^[j] δb^[n−j] for ω₂ω₃ (P), γ₂γ₃ (Rs), γ₂ω₃ (S), γ₃ω₂ (T), cyclic in
       // the lanes: the terms whose tangent coefficients are older first, the newest (δ^[n]) last.
       // Each product added to its sum by a fused multiply-add, the two of a term one after the
-      // other; the terms j = 1..n − 1 in two interleaved halves (odd and even j) to shorten the
-      // chains, then the halves added.
+      // other; the terms j = 1..n − 1 in two halves, j and n − j together for 0 < j < n − j (the
+      // four coefficients of the pair loaded once for both) into the first and the second, then
+      // j = n/2 (n even) into the second, then the halves added.
       L P{}, Rs{}, S{}, T{}, Pb{}, Rb{}, Sb{}, Tb{};
       auto add = [](const Rotated& da, const Rotated& xb, const Rotated& xa, const Rotated& db,
                     L& sum_p, L& rs, L& sum_s, L& sum_t) {
@@ -60,12 +61,12 @@ template <class L, class F>
       if (n == 0) {
         add(d, X[0], X[0], d, P, Rs, S, T);
       } else {
-        int j = 1;
-        for (; j + 1 < n; j += 2) {
+        const int last_pair = (n - 1) / 2;
+        for (int j = 1; j <= last_pair; ++j) {
           add(D[j], X[n - j], X[j], D[n - j], P, Rs, S, T);
-          add(D[j + 1], X[n - j - 1], X[j + 1], D[n - j - 1], Pb, Rb, Sb, Tb);
+          add(D[n - j], X[j], X[n - j], D[j], Pb, Rb, Sb, Tb);
         }
-        if (j < n) add(D[j], X[n - j], X[j], D[n - j], P, Rs, S, T);
+        if (n % 2 == 0) add(D[n / 2], X[n / 2], X[n / 2], D[n / 2], Pb, Rb, Sb, Tb);
         P += Pb;
         Rs += Rb;
         S += Sb;
