@@ -158,8 +158,8 @@ void expand(const double* consts, const double* x, int order, double* series) {
 
 // Holds an AVX-512 value in a register (an empty asm that the compiler must assume reads and
 // changes it): the compiler then does not fold a value used twice into two loads from memory,
-// which made the tangent's sums wait on the loads. With AVX-512's 32 registers only: AVX2's 16
-// cannot hold the sixteen operands and the eight sums.
+// which made the tangent's sums wait on the loads. For AVX-512's 32 registers: AVX2's 16 cannot
+// hold the sixteen operands and the eight sums.
 template <class V>
 [[gnu::always_inline]] inline V pinned(V v) {
 #if defined(__x86_64__) && defined(__GNUC__)
@@ -206,8 +206,8 @@ void expand_tangent(const double* consts, const double* series, const double* v,
     z.s = F::fma(xa_g[c1], db_w[c2], F::fma(da_g[c1], xb_w[c2], z.s));
     z.t = F::fma(xa_g[c2], db_w[c1], F::fma(da_g[c2], xb_w[c1], z.t));
   };
-  // One component after another (eight sums in registers, not 24): the terms j and n − j together
-  // (their sixteen operands loaded once for the sixteen products), each sum over j in
+  // One component after another (eight sums in registers, not 24), the terms j and n − j of the
+  // two halves together where the registers allow (AVX-512), each sum over j in
   // taylor_tangent_lanes.hpp's order: the same bits.
   for (int n = 0; n < order; ++n) {
     const double inv = kInverse[static_cast<std::size_t>(n)];
@@ -222,25 +222,35 @@ void expand_tangent(const double* consts, const double* series, const double* v,
       }
       Sums<V> zb;
       const int last_pair = (n - 1) / 2;
-      for (int j = 1; j <= last_pair; ++j) {
-        // The sixteen operands, each used twice: held in registers, not loaded twice.
-        const V dj_w1 = pinned(dw[j][c1]), dj_w2 = pinned(dw[j][c2]), dj_g1 = pinned(dg[j][c1]),
-                dj_g2 = pinned(dg[j][c2]), dn_w1 = pinned(dw[n - j][c1]),
-                dn_w2 = pinned(dw[n - j][c2]), dn_g1 = pinned(dg[n - j][c1]),
-                dn_g2 = pinned(dg[n - j][c2]), xj_w1 = pinned(xw[j][c1]), xj_w2 = pinned(xw[j][c2]),
-                xj_g1 = pinned(xg[j][c1]), xj_g2 = pinned(xg[j][c2]), xn_w1 = pinned(xw[n - j][c1]),
-                xn_w2 = pinned(xw[n - j][c2]), xn_g1 = pinned(xg[n - j][c1]),
-                xn_g2 = pinned(xg[n - j][c2]);
-        // add(δa = δ^[j], b = x^[n−j], a = x^[j], δb = δ^[n−j]) into za, and the term n − j into
-        // zb.
-        za.p = F::fma(xj_w1, dn_w2, F::fma(dj_w1, xn_w2, za.p));
-        za.rs = F::fma(xj_g1, dn_g2, F::fma(dj_g1, xn_g2, za.rs));
-        za.s = F::fma(xj_g1, dn_w2, F::fma(dj_g1, xn_w2, za.s));
-        za.t = F::fma(xj_g2, dn_w1, F::fma(dj_g2, xn_w1, za.t));
-        zb.p = F::fma(xn_w1, dj_w2, F::fma(dn_w1, xj_w2, zb.p));
-        zb.rs = F::fma(xn_g1, dj_g2, F::fma(dn_g1, xj_g2, zb.rs));
-        zb.s = F::fma(xn_g1, dj_w2, F::fma(dn_g1, xj_w2, zb.s));
-        zb.t = F::fma(xn_g2, dj_w1, F::fma(dn_g2, xj_w1, zb.t));
+      if constexpr (sizeof(V) == 64) {
+        // AVX-512: the pairs j, n − j, their sixteen operands (each used twice) held in registers,
+        // not loaded twice.
+        for (int j = 1; j <= last_pair; ++j) {
+          const V dj_w1 = pinned(dw[j][c1]), dj_w2 = pinned(dw[j][c2]), dj_g1 = pinned(dg[j][c1]),
+                  dj_g2 = pinned(dg[j][c2]), dn_w1 = pinned(dw[n - j][c1]),
+                  dn_w2 = pinned(dw[n - j][c2]), dn_g1 = pinned(dg[n - j][c1]),
+                  dn_g2 = pinned(dg[n - j][c2]), xj_w1 = pinned(xw[j][c1]),
+                  xj_w2 = pinned(xw[j][c2]), xj_g1 = pinned(xg[j][c1]), xj_g2 = pinned(xg[j][c2]),
+                  xn_w1 = pinned(xw[n - j][c1]), xn_w2 = pinned(xw[n - j][c2]),
+                  xn_g1 = pinned(xg[n - j][c1]), xn_g2 = pinned(xg[n - j][c2]);
+          // add(δa = δ^[j], b = x^[n−j], a = x^[j], δb = δ^[n−j]) into za, the term n − j into zb.
+          za.p = F::fma(xj_w1, dn_w2, F::fma(dj_w1, xn_w2, za.p));
+          za.rs = F::fma(xj_g1, dn_g2, F::fma(dj_g1, xn_g2, za.rs));
+          za.s = F::fma(xj_g1, dn_w2, F::fma(dj_g1, xn_w2, za.s));
+          za.t = F::fma(xj_g2, dn_w1, F::fma(dj_g2, xn_w1, za.t));
+          zb.p = F::fma(xn_w1, dj_w2, F::fma(dn_w1, xj_w2, zb.p));
+          zb.rs = F::fma(xn_g1, dj_g2, F::fma(dn_g1, xj_g2, zb.rs));
+          zb.s = F::fma(xn_g1, dj_w2, F::fma(dn_g1, xj_w2, zb.s));
+          zb.t = F::fma(xn_g2, dj_w1, F::fma(dn_g2, xj_w1, zb.t));
+        }
+      } else {
+        // 16 registers or fewer: the half za over j, then the half zb (the same order in each).
+        for (int j = 1; j <= last_pair; ++j) {
+          add(dw[j], dg[j], xw[n - j], xg[n - j], xw[j], xg[j], dw[n - j], dg[n - j], c1, c2, za);
+        }
+        for (int j = 1; j <= last_pair; ++j) {
+          add(dw[n - j], dg[n - j], xw[j], xg[j], xw[n - j], xg[n - j], dw[j], dg[j], c1, c2, zb);
+        }
       }
       if (n % 2 == 0) {
         const int h = n / 2;

@@ -101,7 +101,7 @@ template <class D>
   const D special =
       x == 0.0 ? splat<D>(-inf)
                : (x < 0.0 ? splat<D>(std::numeric_limits<double>::quiet_NaN()) : x);  // +inf, NaN
-  return (x > 0.0) & (x < inf) ? r : special;
+  return ((x > 0.0) & (x < inf)) ? r : special;
 }
 
 template <class D>
