@@ -1,7 +1,8 @@
 // The ensemble kernel for AVX2: four doubles per register, six registers per block (the rotations
 // are a chain of dependent operations; six independent chains keep the units busy: 1.1e8
 // trajectory-steps/s for splitting2 against 0.6e8 with two, docs/performance.md). Compiled with
-// -mavx2 -ffp-contract=off (CMakeLists.txt); run only where the CPU has AVX2 (ensemble.cpp).
+// -mavx2 -ffp-contract=off (CMakeLists.txt); run only where the CPU has AVX2 and FMA (ensemble.cpp:
+// the Taylor ensemble's AVX2 kernel needs both, and the two paths share one test).
 
 #include "ensemble_kernel.hpp"
 #include "ensemble_tangent_kernel.hpp"
