@@ -10,6 +10,10 @@
 #include <cstring>
 #include <limits>
 
+#if defined(__x86_64__) && defined(__GNUC__) && defined(__AVX2__) && defined(__FMA__)
+#include <immintrin.h>
+#endif
+
 #include "newtop/integrate/taylor.hpp"
 #include "taylor_math.hpp"
 
@@ -102,6 +106,16 @@ struct PairFma {
             V2{std::fma(a.hi[0], b.hi[0], c.hi[0]), std::fma(a.hi[1], b.hi[1], c.hi[1])}};
   }
 };
+
+#if defined(__x86_64__) && defined(__GNUC__) && defined(__AVX2__) && defined(__FMA__)
+// a·b + c rounded once, lane by lane, on V4: only in the files compiled for AVX2 and FMA
+// (taylor_avx2.cpp, phase/taylor_tangent_avx2.cpp).
+struct V4Fma {
+  [[gnu::always_inline]] static V4 fma(const V4& a, const V4& b, const V4& c) {
+    return _mm256_fmadd_pd(a, b, c);
+  }
+};
+#endif
 
 // The max norm of the first `lanes` lanes (NaN propagates).
 inline double norm_inf(const Lanes& a, int lanes) {

@@ -5,25 +5,11 @@
 #include "taylor_tangent_lanes.hpp"
 
 #if defined(__x86_64__) && defined(__GNUC__)
-#include <immintrin.h>
-
 namespace newtop::detail {
-namespace {
-
-// a·b + c rounded once, lane by lane.
-struct V4Fma {
-  [[gnu::always_inline]] static taylor_lanes::V4 fma(const taylor_lanes::V4& a,
-                                                     const taylor_lanes::V4& b,
-                                                     const taylor_lanes::V4& c) {
-    return _mm256_fmadd_pd(a, b, c);
-  }
-};
-
-}  // namespace
 
 void taylor_expand_tangent_avx2(const TaylorModel& p, const TaylorSeries& s,
                                 TaylorTangentSeries& ts) {
-  taylor_lanes::expand_tangent_lanes<taylor_lanes::V4, V4Fma>(p, s, ts);
+  taylor_lanes::expand_tangent_lanes<taylor_lanes::V4, taylor_lanes::V4Fma>(p, s, ts);
 }
 
 }  // namespace newtop::detail
