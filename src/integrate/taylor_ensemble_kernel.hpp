@@ -1,12 +1,12 @@
 #pragma once
 // The kernels of the Taylor ensemble (taylor_ensemble.hpp; private to src/integrate): Taylor's
 // recurrences and the sum of the series, one trajectory per lane of a vector of L doubles, in
-// structure-of-arrays form. Each lane does the operations of taylor.cpp's expand_lanes and of
-// taylor_lanes::sum_series for one component after another, in their order: where taylor.cpp holds
-// the components (x, y, z) in lanes and rotates them, (y, z, x) and (z, x, y), these kernels hold
+// structure-of-arrays form. Each lane does the operations of taylor_recurrences.hpp's expand_lanes
+// and of taylor_lanes::sum_series for one component after another, in their order: where those hold
+// the components (x, y, z) in lanes and rotate them, (y, z, x) and (z, x, y), these kernels hold
 // component c + 1 and c + 2 (mod 3) in registers of their own. Compiled with -ffp-contract=off
-// (CMakeLists.txt), so that no a·b + c is fused but those the recurrences fuse explicitly (F::fma,
-// as taylor.cpp's O::fma): the same bits as the scalar recurrences.
+// (CMakeLists.txt), so that no a·b + c is fused but those the recurrences fuse explicitly (F::fma):
+// the same bits as the scalar recurrences.
 //
 // Layouts, for L lanes: the constants (kConstants rows: 1/I, k, b, d_spin, d_field, three
 // components each) at consts[(3 q + c) L + l]; a state (m, γ) at x[c L + l], c = 0..5; the
@@ -71,13 +71,13 @@ template <class V>
   std::memcpy(p, &v, sizeof v);
 }
 
-// The sums of one order and one component c (taylor.cpp: P, Rs, S, T of c).
+// The sums of one order and one component c (expand_lanes: P, Rs, S, T of c).
 template <class V>
 struct Sums {
   V p{}, rs{}, s{}, t{};
 };
 
-// taylor.cpp's pair(a, c) for the component c (its neighbours c1 = c + 1, c2 = c + 2 mod 3): the
+// expand_lanes's pair(a, c) for the component c (its neighbours c1 = c + 1, c2 = c + 2 mod 3): the
 // terms j and n − j of the Cauchy sums, each product added by a fused multiply-add (F::fma).
 template <class F, class V>
 [[gnu::always_inline]] inline void pair(const V (&wa)[3], const V (&ga)[3], const V (&wc)[3],
@@ -88,7 +88,7 @@ template <class F, class V>
   z.t = F::fma(gc[c2], wa[c1], F::fma(ga[c2], wc[c1], z.t));
 }
 
-// taylor.cpp's single(a) for the component c: the term j = n − j.
+// expand_lanes's single(a) for the component c: the term j = n − j.
 template <class F, class V>
 [[gnu::always_inline]] inline void single(const V (&w)[3], const V (&g)[3], int c1, int c2,
                                           Sums<V>& z) {
@@ -98,8 +98,8 @@ template <class F, class V>
   z.t = F::fma(g[c2], w[c1], z.t);
 }
 
-// The coefficients 0..order of the series through x (taylor.cpp, expand_lanes without attitude).
-// One component after another (eight sums in registers, not 24), each sum over j in taylor.cpp's
+// The coefficients 0..order of the series through x (expand_lanes without attitude).
+// One component after another (eight sums in registers, not 24), each sum over j in expand_lanes's
 // order: the same bits. F::fma(a, b, c): a·b + c rounded once, lane by lane.
 template <class V, int L, class F>
 void expand(const double* consts, const double* x, int order, double* series) {
@@ -125,7 +125,7 @@ void expand(const double* consts, const double* x, int order, double* series) {
     double* next = series + 6 * (n + 1) * L;
     auto component = [&](auto c_) {  // c a constant: its neighbours' indices fixed
       constexpr int c = decltype(c_)::value, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-      Sums<V> a, bsum;  // the two interleaved halves (P and Pb in taylor.cpp)
+      Sums<V> a, bsum;  // the two interleaved halves (P and Pb in expand_lanes)
       int j = 1;
       for (; j + 1 <= last_pair; j += 2) {
         pair<F>(w[j], g[j], w[n - j], g[n - j], c1, c2, a);
@@ -156,14 +156,14 @@ void expand(const double* consts, const double* x, int order, double* series) {
   }
 }
 
-// Holds an AVX-512 value in a register (an empty asm that the compiler must assume reads and
-// changes it): the compiler then does not fold a value used twice into two loads from memory,
-// which made the tangent's sums wait on the loads. For AVX-512's 32 registers: AVX2's 16 cannot
-// hold the sixteen operands and the eight sums.
+// Holds a value in a register (an empty asm that the compiler must assume reads and changes it):
+// the compiler then does not fold a value used twice into two loads from memory, which made the
+// tangent's sums wait on the loads. Used with AVX-512's 32 registers only: AVX2's 16 cannot hold
+// the sixteen operands and the eight sums.
 template <class V>
 [[gnu::always_inline]] inline V pinned(V v) {
 #if defined(__x86_64__) && defined(__GNUC__)
-  if constexpr (sizeof(V) == 64) asm("" : "+v"(v));
+  asm("" : "+v"(v));
 #endif
   return v;
 }
