@@ -1,7 +1,7 @@
 // The Taylor ensemble's kernel for AVX-512: eight doubles per register. Compiled with -mavx512f
 // -ffp-contract=off (CMakeLists.txt); run only where the CPU has AVX-512F (taylor_ensemble.cpp).
 
-#include "taylor_ensemble_kernel.hpp"
+#include "taylor_ensemble_wide.hpp"
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
@@ -18,7 +18,7 @@ struct Fma {
 };
 
 void expand(const double* consts, const double* x, int order, double* series) {
-  taylor_ensemble_simd::expand<V, kLanes, Fma>(consts, x, order, series);
+  taylor_ensemble_simd::expand_wide<V, kLanes, Fma>(consts, x, order, series);
 }
 void sum(const double* series, int order, const double* h, double* out) {
   taylor_ensemble_simd::sum<V, kLanes>(series, order, h, out);

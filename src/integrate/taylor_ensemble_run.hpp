@@ -96,8 +96,14 @@ class BatchRun {
     }
     while (std::any_of(lanes_.begin(), lanes_.end(), [](const LaneRun& r) { return r.active; })) {
       kernel_.expand(consts_, x_, e_.order(), series_);
-      kernel_.norms(series_, nullptr, e_.order(), norms_);
-      kernel_.steps(norms_, e_.order(), e_.abs_tol(), e_.rel_tol(), steps_);
+      // The state's own step: every step without a tangent vector; with one, only a lane's first
+      // (the tangent stepper's later steps follow from the state's and the vector's norms).
+      if (!tangent_ || std::any_of(lanes_.begin(), lanes_.end(), [](const LaneRun& r) {
+            return r.active && r.next == LaneRun::Next::initial;
+          })) {
+        kernel_.norms(series_, nullptr, e_.order(), norms_);
+        kernel_.steps(norms_, e_.order(), e_.abs_tol(), e_.rel_tol(), steps_);
+      }
       if (tangent_) {
         kernel_.expand_tangent(consts_, series_, v_, e_.order(), tangent_series_);
         kernel_.norms(series_, tangent_series_, e_.order(), tangent_norms_);
@@ -255,10 +261,10 @@ class BatchRun {
   // steps (its h set).
   bool decide(std::size_t l) {
     LaneRun& r = lanes_[l];
-    const double step = lane_step(l);
     if (r.next == LaneRun::Next::initial) {
-      r.dt = dir_ * (opt_.initial_step > 0 ? opt_.initial_step : step);
+      r.dt = dir_ * (opt_.initial_step > 0 ? opt_.initial_step : lane_step(l));
     } else if (r.next == LaneRun::Next::after_step && !tangent_) {
+      const double step = lane_step(l);
       r.dt = r.h < 0 ? -step : step;
     }
     if (r.out.steps + r.out.rejected >= opt_.max_steps) {
@@ -278,7 +284,7 @@ class BatchRun {
       return false;
     }
     r.dt_tried = r.dt;
-    const double h_max = tangent_ ? lane_step(l, true) : step;
+    const double h_max = lane_step(l, tangent_ != nullptr);
     r.h_max = h_max;
     if (!(h_max > 0.0)) {  // NaN: the series is not finite (try_step's rejection)
       r.dt *= kNonFiniteShrink;

@@ -12,6 +12,7 @@
 
 #include "support/cli.hpp"
 
+namespace test_analytic_euler {
 namespace {
 
 /// The angles and the samples come from the same closed form evaluated at the same t: they agree
@@ -99,3 +100,4 @@ TEST(AnalyticEuler, CurveNeedsJsonAndASolvedCase) {
 }
 
 }  // namespace
+}  // namespace test_analytic_euler

@@ -17,6 +17,7 @@
 #include "support/cli.hpp"
 
 namespace newtop {
+namespace test_attitude_cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -131,4 +132,5 @@ TEST(AttitudeCli, WithoutAnAttitudeNothingChanges) {
 }
 
 }  // namespace
+}  // namespace test_attitude_cli
 }  // namespace newtop

@@ -11,6 +11,7 @@
 
 #include "support/cli.hpp"
 
+namespace test_chaos_cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -112,3 +113,4 @@ TEST(ChaosCli, BadInputIsOneLineBeforeWork) {
 }
 
 }  // namespace
+}  // namespace test_chaos_cli

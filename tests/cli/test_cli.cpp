@@ -20,6 +20,7 @@
 
 #include "support/cli.hpp"
 
+namespace test_cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -480,3 +481,4 @@ TEST(Cli, AnalyticWithoutSpanSamplesOnePeriod) {
 }
 
 }  // namespace
+}  // namespace test_cli

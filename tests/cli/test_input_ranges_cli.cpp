@@ -13,6 +13,7 @@
 
 #include "support/cli.hpp"
 
+namespace test_input_ranges_cli {
 namespace {
 
 using newtop::test::CliResult;
@@ -120,3 +121,4 @@ TEST(InputRanges, ValuesInTheRangeReachTheCommand) {
 }
 
 }  // namespace
+}  // namespace test_input_ranges_cli

@@ -15,6 +15,7 @@
 #include "io/mesh_cases.hpp"
 #include "support/cli.hpp"
 
+namespace test_mesh_cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -92,3 +93,4 @@ TEST(MeshCli, NonRegularFilesAreRefused) {
 }
 
 }  // namespace
+}  // namespace test_mesh_cli

@@ -9,6 +9,7 @@
 
 #include "support/cli.hpp"
 
+namespace test_negative_zero {
 namespace {
 
 using newtop::test::example_path;
@@ -31,3 +32,4 @@ TEST(NegativeZero, AnalyticWritesTheLagrangeQuarticWithoutMinusZero) {
 }
 
 }  // namespace
+}  // namespace test_negative_zero

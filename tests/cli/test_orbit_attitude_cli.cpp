@@ -16,6 +16,7 @@
 
 #include "support/cli.hpp"
 
+namespace test_orbit_attitude_cli {
 namespace {
 
 using newtop::test::CliResult;
@@ -334,3 +335,4 @@ TEST(OrbitAttitudeCli, LibrationTakesAnyBodyAxisAlongTheNormal) {
 }
 
 }  // namespace
+}  // namespace test_orbit_attitude_cli

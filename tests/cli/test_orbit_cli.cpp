@@ -11,6 +11,7 @@
 
 #include "support/cli.hpp"
 
+namespace test_orbit_cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -135,3 +136,4 @@ TEST(OrbitCli, BadOrbitInputIsOneLine) {
 }
 
 }  // namespace
+}  // namespace test_orbit_cli

@@ -19,6 +19,7 @@
 
 #include "support/cli.hpp"
 
+namespace test_orbit_options_cli {
 namespace {
 
 using newtop::test::CliResult;
@@ -259,3 +260,4 @@ TEST(OptionsOnEveryModel, EverySweepQuantityAndOptionWorksOrIsRefusedInOneLine) 
 }
 
 }  // namespace
+}  // namespace test_orbit_options_cli

@@ -13,6 +13,7 @@
 
 #include "support/cli.hpp"
 
+namespace test_orbit_section_cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -105,3 +106,4 @@ TEST(OrbitSectionCli, BadCombinationsAreOneLineBeforeWork) {
 }
 
 }  // namespace
+}  // namespace test_orbit_section_cli

@@ -12,6 +12,7 @@
 
 #include "support/cli.hpp"
 
+namespace test_section_cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -116,3 +117,4 @@ TEST(SectionCli, EmptyLevelIsReported) {
 }
 
 }  // namespace
+}  // namespace test_section_cli

@@ -18,6 +18,7 @@
 
 #include "support/cli.hpp"
 
+namespace test_spans_cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -270,3 +271,4 @@ TEST(SpansCli, TimesBeyondDoublePrecision) {
 }
 
 }  // namespace
+}  // namespace test_spans_cli

@@ -12,6 +12,7 @@
 #include "newtop/orbit/orbit_families.hpp"
 
 namespace newtop {
+namespace test_branch {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -134,4 +135,5 @@ TEST(ContinuationBranch, AsymmetricBranchLeavesThePitchforkWithoutTheSymmetry) {
 }
 
 }  // namespace
+}  // namespace test_branch
 }  // namespace newtop

@@ -15,6 +15,7 @@
 #include "newtop/orbit/orbit_families.hpp"
 
 namespace newtop {
+namespace test_continuation {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -243,4 +244,5 @@ TEST(ContinuationEquilibrium, CrossesTheDebraDelpBoundariesWhereTheFormulasSay) 
 }
 
 }  // namespace
+}  // namespace test_continuation
 }  // namespace newtop

@@ -14,6 +14,7 @@
 #include "support/cli.hpp"
 
 namespace newtop {
+namespace test_continue_cli {
 namespace {
 
 const std::string kSynchronous = " continue " + test::example_path("continue_synchronous.toml");
@@ -222,4 +223,5 @@ TEST(ContinueCli, BadInputIsOneLineAndWritesNothing) {
 }
 
 }  // namespace
+}  // namespace test_continue_cli
 }  // namespace newtop

@@ -13,6 +13,7 @@
 #include "newtop/model/integrals.hpp"
 
 namespace newtop {
+namespace test_lyapunov_family {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -78,4 +79,5 @@ TEST(ContinuationLyapunov, FamilyStartsAtTheLinearPeriodAndEachOrbitCloses) {
 }
 
 }  // namespace
+}  // namespace test_lyapunov_family
 }  // namespace newtop

@@ -10,6 +10,7 @@
 #include "newtop/analysis/rest_family.hpp"
 
 namespace newtop {
+namespace test_rest_family {
 namespace {
 
 // As in test_continuation.cpp: 1e-10 in the parameter, the demand; the test functions
@@ -92,4 +93,5 @@ TEST(ContinuationRest, SaddleNodeIsTheSecularPolynomialsDoubleRoot) {
 }
 
 }  // namespace
+}  // namespace test_rest_family
 }  // namespace newtop

@@ -14,6 +14,7 @@
 #include "newtop/io/mesh.hpp"
 
 namespace newtop {
+namespace test_eros {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -170,4 +171,5 @@ TEST(Eros, ClosedFormAgreesWithItsMultipoleSeriesAtIntermediateDistance) {
 }
 
 }  // namespace
+}  // namespace test_eros
 }  // namespace newtop

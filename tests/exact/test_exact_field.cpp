@@ -10,6 +10,7 @@
 #include "newtop/model/integrals.hpp"
 
 namespace newtop {
+namespace test_exact_field {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -147,4 +148,5 @@ TEST(ExactField, SplittingConservesCasimirsAndAgreesWithRkf78) {
 }
 
 }  // namespace
+}  // namespace test_exact_field
 }  // namespace newtop

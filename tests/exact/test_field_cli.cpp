@@ -12,6 +12,7 @@
 #include "support/cli.hpp"
 
 namespace newtop {
+namespace test_field_cli {
 namespace {
 
 using test::CliResult;
@@ -212,4 +213,5 @@ TEST(SimulateCli, ExactFieldRunReportsQuadraticComparison) {
 }
 
 }  // namespace
+}  // namespace test_field_cli
 }  // namespace newtop

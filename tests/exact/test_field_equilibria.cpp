@@ -15,6 +15,7 @@
 #include "newtop/analysis/stability.hpp"
 
 namespace newtop {
+namespace test_field_equilibria {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -183,4 +184,5 @@ TEST(FieldRotations, EverySampledAxisIsAPermanentRotationOfTheExactField) {
 }
 
 }  // namespace
+}  // namespace test_field_equilibria
 }  // namespace newtop

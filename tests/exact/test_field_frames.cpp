@@ -13,6 +13,7 @@
 #include "support/cli.hpp"
 
 namespace newtop {
+namespace test_field_frames {
 namespace {
 
 namespace fs = std::filesystem;
@@ -75,4 +76,5 @@ TEST(FieldFrames, SummaryNamesBothFrames) {
 }
 
 }  // namespace
+}  // namespace test_field_frames
 }  // namespace newtop

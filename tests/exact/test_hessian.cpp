@@ -13,6 +13,7 @@
 #include "newtop/exact/multipole.hpp"
 
 namespace newtop {
+namespace test_hessian {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -185,4 +186,5 @@ TEST(Hessian, OrderThreeIsTheQuadraticModelOnTheSphere) {
 }
 
 }  // namespace
+}  // namespace test_hessian
 }  // namespace newtop

@@ -9,6 +9,7 @@
 #include "newtop/io/mesh.hpp"
 
 namespace newtop {
+namespace test_mass_models {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -136,4 +137,5 @@ TEST(MeshFiles, OffThroughAssimpAndErosThroughTetgen) {
 }
 
 }  // namespace
+}  // namespace test_mass_models
 }  // namespace newtop

@@ -14,6 +14,7 @@
 #include "newtop/model/model.hpp"
 
 namespace newtop {
+namespace test_model {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -144,4 +145,5 @@ TEST(Model, IntegralsAreThoseOfTheFieldItself) {
 }
 
 }  // namespace
+}  // namespace test_model
 }  // namespace newtop

@@ -14,6 +14,7 @@
 #include "support/cli.hpp"
 
 namespace newtop {
+namespace test_model_cli {
 namespace {
 
 using test::CliResult;
@@ -151,4 +152,5 @@ TEST(ModelCli, QuadraticOnlyAnalysesRefuseTheExactFieldInOneLine) {
 }
 
 }  // namespace
+}  // namespace test_model_cli
 }  // namespace newtop

@@ -16,6 +16,7 @@
 #include "newtop/exact/multipole.hpp"
 
 namespace newtop {
+namespace test_moment_accuracy {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -69,4 +70,5 @@ TEST(MomentAccuracy, FewUlpsAgainstHighPrecisionAndTheQuadraticModel) {
 }
 
 }  // namespace
+}  // namespace test_moment_accuracy
 }  // namespace newtop

@@ -9,6 +9,7 @@
 #include "newtop/exact/multipole.hpp"
 
 namespace newtop {
+namespace test_multipole {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -129,4 +130,5 @@ TEST(Multipole, BrunFieldFromPlaneNotThroughO) {
 }
 
 }  // namespace
+}  // namespace test_multipole
 }  // namespace newtop

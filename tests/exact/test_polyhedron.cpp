@@ -12,6 +12,7 @@
 #include "newtop/io/mesh.hpp"
 
 namespace newtop {
+namespace test_polyhedron {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -173,4 +174,5 @@ TEST(PolyhedronPotential, SameBitsForAnyThreadCount) {
 }
 
 }  // namespace
+}  // namespace test_polyhedron
 }  // namespace newtop

@@ -19,6 +19,7 @@
 #include "newtop/integrate/methods.hpp"
 
 namespace newtop {
+namespace test_brun_case {
 namespace {
 
 constexpr double kTwoPi = 2 * std::numbers::pi;
@@ -183,6 +184,7 @@ TEST(BrunCase, ReproducesEulerPoinsotAsLambdaVanishes) {
 }
 
 }  // namespace
+}  // namespace test_brun_case
 // Beyond 2^53 a phase has no digit of its angle left: the inversion refuses the time in one line
 // naming `times` (an input error, before any work) instead of failing inside a bracket.
 TEST(BrunCase, RefusesTimesBeyondDoublePrecisionOfThePhase) {

@@ -14,6 +14,7 @@
 
 #include "support/cli.hpp"
 
+namespace test_brun_cli {
 namespace {
 
 using newtop::test::CliResult;
@@ -112,3 +113,4 @@ TEST(BrunCli, NonzeroAreaIsSolvedByTheAbelPrymInversion) {
 }
 
 }  // namespace
+}  // namespace test_brun_cli

@@ -15,6 +15,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_brun_level {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -268,4 +269,5 @@ TEST(BrunLevel, SmallAreaSplitsEachRootOfNAsPredicted) {
 }
 
 }  // namespace
+}  // namespace test_brun_level
 }  // namespace newtop

@@ -20,6 +20,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_brun_prym {
 namespace {
 
 using Complex = std::complex<double>;
@@ -201,4 +202,5 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& p) { return std::string(p.param.name); });
 
 }  // namespace
+}  // namespace test_brun_prym
 }  // namespace newtop

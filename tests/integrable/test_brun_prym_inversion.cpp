@@ -14,6 +14,7 @@
 #include "newtop/integrate/methods.hpp"
 
 namespace newtop {
+namespace test_brun_prym_inversion {
 namespace {
 
 // The numerical reference: rkf78 at 1e-14, global error ~1e-11 over the ≤ 300 time units of five
@@ -136,4 +137,5 @@ TEST(BrunPrymInversion, SmallLambdaApproachesEulerPoinsotLinearly) {
 }
 
 }  // namespace
+}  // namespace test_brun_prym_inversion
 }  // namespace newtop

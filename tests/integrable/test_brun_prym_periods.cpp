@@ -20,6 +20,7 @@
 #include "newtop/integrate/methods.hpp"
 
 namespace newtop {
+namespace test_brun_prym_periods {
 namespace {
 
 // A period of the torus returns the state to the flows' global error (rkf78 at 1e-13 over ≲ 30
@@ -146,4 +147,5 @@ INSTANTIATE_TEST_SUITE_P(Levels, BrunPrymPeriods,
                          [](const auto& p) { return std::string(p.param.name); });
 
 }  // namespace
+}  // namespace test_brun_prym_periods
 }  // namespace newtop

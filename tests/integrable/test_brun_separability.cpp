@@ -23,6 +23,7 @@
 #include "newtop/model/integrals.hpp"
 
 namespace newtop {
+namespace test_brun_separability {
 namespace {
 
 using Complex = std::complex<double>;
@@ -345,4 +346,5 @@ TEST(BrunSeparability, EigenvectorPolesWithTheSphereConicNormalisationDoNotCommu
 }
 
 }  // namespace
+}  // namespace test_brun_separability
 }  // namespace newtop

@@ -13,6 +13,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_brun_separation {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -104,4 +105,5 @@ TEST(BrunSeparation, RejectsNonzeroAreaEqualMomentsAndOtherCases) {
 }
 
 }  // namespace
+}  // namespace test_brun_separation
 }  // namespace newtop

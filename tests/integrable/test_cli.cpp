@@ -10,6 +10,7 @@
 
 #include "support/cli.hpp"
 
+namespace test_cli {
 namespace {
 
 using newtop::test::CliResult;
@@ -73,3 +74,4 @@ TEST(FindIntegralsCli, JsonAndPolynomialPotential) {
 }
 
 }  // namespace
+}  // namespace test_cli

@@ -13,6 +13,7 @@
 #include "newtop/integrate/methods.hpp"
 
 namespace newtop {
+namespace test_euler_poinsot {
 namespace {
 
 // rkf78 at tolerance 1e-14 over a few periods keeps a global error near 1e-12 (|m| ~ 1); the
@@ -96,4 +97,5 @@ TEST(EulerPoinsot, RejectsGyrostat) {
 }
 
 }  // namespace
+}  // namespace test_euler_poinsot
 }  // namespace newtop

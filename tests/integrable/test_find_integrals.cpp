@@ -10,6 +10,7 @@
 #include "newtop/analysis/find_integrals.hpp"
 
 namespace newtop {
+namespace test_find_integrals {
 namespace {
 
 // A vector in the span of the found integrals lies there to rounding (~1e-12 after the SVD); a
@@ -120,4 +121,5 @@ TEST(FindIntegrals, RejectsBadDegree) {
 }
 
 }  // namespace
+}  // namespace test_find_integrals
 }  // namespace newtop

@@ -13,6 +13,7 @@
 #include "newtop/integrate/free_body_flow.hpp"
 
 namespace newtop {
+namespace test_free_body_closed_form {
 namespace {
 
 // The quadrature is asked for 1e-15 relative on the rate, smooth and periodic: its result is good
@@ -169,4 +170,5 @@ TEST(FreeBodyFlowClosedForm, IsAOneParameterGroup) {
 }
 
 }  // namespace
+}  // namespace test_free_body_closed_form
 }  // namespace newtop

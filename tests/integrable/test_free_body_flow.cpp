@@ -17,6 +17,7 @@
 #include "support/energy_drift.hpp"
 
 namespace newtop {
+namespace test_free_body_flow {
 namespace {
 
 static_assert(FixedStepper<FreeBodySplittingStepper, QuadraticModel>);
@@ -144,4 +145,5 @@ TEST(FreeBodyFlow, StepForwardThenBackReturnsToStart) {
 }
 
 }  // namespace
+}  // namespace test_free_body_flow
 }  // namespace newtop

@@ -16,6 +16,7 @@
 #include "newtop/integrate/methods.hpp"
 
 namespace newtop {
+namespace test_lagrange_case {
 namespace {
 
 // rkf78 at 1e-14: global error ~1e-12 over a few nutation periods; 1e-10 is the target.
@@ -146,4 +147,5 @@ TEST(LagrangeCase, RejectsAsymmetricBody) {
 }
 
 }  // namespace
+}  // namespace test_lagrange_case
 }  // namespace newtop

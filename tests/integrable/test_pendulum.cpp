@@ -14,6 +14,7 @@
 #include "newtop/integrate/methods.hpp"
 
 namespace newtop {
+namespace test_pendulum {
 namespace {
 
 // rkf78 at 1e-14: global error ~1e-12 over a few periods; 1e-10 is the target.
@@ -117,4 +118,5 @@ TEST(Pendulum, RejectsStateOutOfThePlane) {
 }
 
 }  // namespace
+}  // namespace test_pendulum
 }  // namespace newtop

@@ -14,6 +14,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_attitude {
 namespace {
 
 using test::kEps;
@@ -320,4 +321,5 @@ TEST(AttitudeInput, NonUnitQuaternionIsBadInput) {
 }
 
 }  // namespace
+}  // namespace test_attitude
 }  // namespace newtop

@@ -10,6 +10,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_conformance {
 namespace {
 
 using test::kEps;
@@ -208,4 +209,5 @@ TEST(ConformanceControl, Rk4EnergyDriftIsDetected) {
 }
 
 }  // namespace
+}  // namespace test_conformance
 }  // namespace newtop

@@ -14,6 +14,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_dense_output {
 namespace {
 
 using test::kEps;
@@ -240,4 +241,5 @@ TEST(OutputTimes, EqualIntervalsWithoutAccumulation) {
 }
 
 }  // namespace
+}  // namespace test_dense_output
 }  // namespace newtop

@@ -13,6 +13,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_dop853 {
 namespace {
 
 namespace dp = dop853;
@@ -155,4 +156,5 @@ TEST(Dop853, CarriesTheAttitude) {
 TEST(Dop853, CommandLineNamesIt) { test::expect_command_line_runs("dop853"); }
 
 }  // namespace
+}  // namespace test_dop853
 }  // namespace newtop

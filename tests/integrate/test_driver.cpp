@@ -11,6 +11,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_driver {
 namespace {
 
 /// The scenario of examples/lagrange_like.toml: a fast symmetric top (r = 4) whose first trial step
@@ -147,4 +148,5 @@ TEST(Driver, OutcomeTimeIsTheTimeOfItsState) {
 }
 
 }  // namespace
+}  // namespace test_driver
 }  // namespace newtop

@@ -18,6 +18,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_ensemble {
 namespace {
 
 using test::kEps;
@@ -212,4 +213,5 @@ TEST(Ensemble, RefusesAPathThisCpuLacks) {
 }
 
 }  // namespace
+}  // namespace test_ensemble
 }  // namespace newtop

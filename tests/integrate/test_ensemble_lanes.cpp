@@ -17,6 +17,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_ensemble_lanes {
 namespace {
 
 using test::available_paths;
@@ -188,4 +189,5 @@ TEST(EnsembleLanes, RefusesModelsThatDoNotFit) {
 }
 
 }  // namespace
+}  // namespace test_ensemble_lanes
 }  // namespace newtop

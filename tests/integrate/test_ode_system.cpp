@@ -12,6 +12,7 @@
 #include "support/ensemble.hpp"
 
 namespace newtop {
+namespace test_ode_system {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -60,4 +61,5 @@ TEST(OdeSystem, QuadraticFieldAgreesWithTheGenericRightHandSide) {
 }
 
 }  // namespace
+}  // namespace test_ode_system
 }  // namespace newtop

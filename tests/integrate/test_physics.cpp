@@ -9,6 +9,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_physics {
 namespace {
 
 using test::kEps;
@@ -164,9 +165,11 @@ TEST(Outcome, AdaptiveUnderflowOnImpossibleTolerance) {
 }
 
 }  // namespace
+}  // namespace test_physics
 }  // namespace newtop
 
 namespace newtop {
+namespace test_physics {
 namespace {
 
 // Dense output of Dormand–Prince: the continuous extension is of order 4, so at tolerance 1e-10
@@ -192,4 +195,5 @@ TEST(DenseOutput, Dopri5InterpolatesInsideSteps) {
 }
 
 }  // namespace
+}  // namespace test_physics
 }  // namespace newtop

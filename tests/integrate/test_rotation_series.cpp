@@ -9,6 +9,7 @@
 #include "newtop/integrate/sub_flows.hpp"
 
 namespace newtop {
+namespace test_rotation_series {
 namespace {
 
 // Each result is a short sum of terms each rounded once: 2 ulps (4.4e-16 relative) covers it.
@@ -33,4 +34,5 @@ TEST(RotationSeries, RoundOffAccurateInEveryBranch) {
 }
 
 }  // namespace
+}  // namespace test_rotation_series
 }  // namespace newtop

@@ -13,6 +13,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_round_off {
 namespace {
 
 using test::kEps;
@@ -99,4 +100,5 @@ TEST(RoundOff, CasimirsFollowBrouwersLawSpinSplit) {
 }
 
 }  // namespace
+}  // namespace test_round_off
 }  // namespace newtop

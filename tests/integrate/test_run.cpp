@@ -15,6 +15,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_run {
 namespace {
 
 std::vector<Model> models() {
@@ -109,4 +110,5 @@ TEST(CompiledRun, ChecksItsInputLikeTheTemplate) {
 }
 
 }  // namespace
+}  // namespace test_run
 }  // namespace newtop

@@ -12,6 +12,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_sub_flows {
 namespace {
 
 using test::kEps;
@@ -144,4 +145,5 @@ TEST(NearIntegrableTables, NeedTheExactFreeBody) {
 }
 
 }  // namespace
+}  // namespace test_sub_flows
 }  // namespace newtop

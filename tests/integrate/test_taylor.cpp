@@ -15,6 +15,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_taylor {
 namespace {
 
 using test::kEps;
@@ -248,4 +249,5 @@ TEST(Taylor, CommandLineNamesIt) {
 }
 
 }  // namespace
+}  // namespace test_taylor
 }  // namespace newtop

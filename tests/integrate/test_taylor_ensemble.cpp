@@ -18,6 +18,7 @@
 #include "support/ensemble.hpp"
 
 namespace newtop {
+namespace test_taylor_ensemble {
 namespace {
 
 using test::available_paths;
@@ -212,4 +213,5 @@ TEST(TaylorEnsemble, RefusesBadInputBeforeAnyWork) {
 }
 
 }  // namespace
+}  // namespace test_taylor_ensemble
 }  // namespace newtop

@@ -15,6 +15,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_taylor_math {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -140,4 +141,5 @@ TEST(TaylorStepMath, StepIsTheDefinition) {
 }
 
 }  // namespace
+}  // namespace test_taylor_math
 }  // namespace newtop

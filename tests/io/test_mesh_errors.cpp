@@ -14,6 +14,7 @@
 #include "newtop/io/mesh.hpp"
 
 namespace newtop {
+namespace test_mesh_errors {
 namespace {
 
 namespace fs = std::filesystem;
@@ -123,4 +124,5 @@ TEST(MeshErrors, PolyhedronErrorsNameTheFile) {
 }
 
 }  // namespace
+}  // namespace test_mesh_errors
 }  // namespace newtop

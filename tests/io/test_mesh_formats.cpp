@@ -15,6 +15,7 @@
 #include "newtop/io/mesh.hpp"
 
 namespace newtop {
+namespace test_mesh_formats {
 namespace {
 
 namespace fs = std::filesystem;
@@ -252,4 +253,5 @@ TEST(MeshFormats, TetgenOneBasedWithAttributesMarkersAndNeighbours) {
 }
 
 }  // namespace
+}  // namespace test_mesh_formats
 }  // namespace newtop

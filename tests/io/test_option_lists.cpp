@@ -9,6 +9,7 @@
 #include "newtop/io/option_lists.hpp"
 
 namespace newtop::io {
+namespace test_option_lists {
 namespace {
 
 TEST(ReadColonValues, ReadsLoHiNWhole) {
@@ -43,4 +44,5 @@ TEST(RangeOptions, EachOptionChecksItsOwnBoundsOnTheSharedReader) {
 }
 
 }  // namespace
+}  // namespace test_option_lists
 }  // namespace newtop::io

@@ -10,6 +10,7 @@
 #include "newtop/io/orbit_scenario.hpp"
 
 namespace newtop::io {
+namespace test_orbit_scenario {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -132,4 +133,5 @@ TEST(OrbitScenario, BadInputIsOneLineNamingTheKey) {
 }
 
 }  // namespace
+}  // namespace test_orbit_scenario
 }  // namespace newtop::io

@@ -13,6 +13,7 @@
 #include "support/cli.hpp"
 
 namespace newtop::io {
+namespace test_potential_file {
 namespace {
 
 using newtop::test::run_newtop;
@@ -122,4 +123,5 @@ TEST(PotentialFile, HostileTomlAndFiles) {
 }
 
 }  // namespace
+}  // namespace test_potential_file
 }  // namespace newtop::io

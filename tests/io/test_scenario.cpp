@@ -9,6 +9,7 @@
 #include "newtop/io/scenario.hpp"
 
 namespace newtop::io {
+namespace test_scenario {
 namespace {
 
 const std::string kValid = R"(
@@ -203,4 +204,5 @@ TEST(Scenario, FullTensorRotatesTheInitialVectors) {
 }
 
 }  // namespace
+}  // namespace test_scenario
 }  // namespace newtop::io

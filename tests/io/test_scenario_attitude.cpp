@@ -13,6 +13,7 @@
 #include "reject.hpp"
 
 namespace newtop::io {
+namespace test_scenario_attitude {
 namespace {
 
 using newtop::io::test::expect_rejected;
@@ -109,4 +110,5 @@ TEST(ScenarioAttitude, BadInput) {
 }
 
 }  // namespace
+}  // namespace test_scenario_attitude
 }  // namespace newtop::io

@@ -14,6 +14,7 @@
 #include "support/cli.hpp"
 
 namespace newtop::io {
+namespace test_scenario_files {
 namespace {
 
 using newtop::test::run_newtop;
@@ -128,4 +129,5 @@ TEST(ScenarioFiles, RelativeNamesAreTakenFromTheScenarioFolder) {
 }
 
 }  // namespace
+}  // namespace test_scenario_files
 }  // namespace newtop::io

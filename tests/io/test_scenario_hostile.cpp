@@ -15,6 +15,7 @@
 #include "reject.hpp"
 
 namespace newtop::io {
+namespace test_scenario_hostile {
 namespace {
 
 using test::expect_rejected;
@@ -215,4 +216,5 @@ TEST(ScenarioHostile, NormalizeWithoutOverflowOrUnderflow) {
 }
 
 }  // namespace
+}  // namespace test_scenario_hostile
 }  // namespace newtop::io

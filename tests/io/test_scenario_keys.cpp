@@ -12,6 +12,7 @@
 #include "reject.hpp"
 
 namespace newtop::io {
+namespace test_scenario_keys {
 namespace {
 
 using test::expect_rejected;
@@ -218,4 +219,5 @@ TEST(ScenarioKeys, PointsWithoutKindArePointMasses) {
 }
 
 }  // namespace
+}  // namespace test_scenario_keys
 }  // namespace newtop::io

@@ -13,6 +13,7 @@
 #include "newtop/io/scenario_text.hpp"
 
 namespace newtop {
+namespace test_scenario_text {
 namespace {
 
 // Round-off of P Pᵀ k against k (three products and sums of numbers of order |k|): 8 ε |k|.
@@ -69,4 +70,5 @@ TEST(ScenarioText, PolyhedronBuiltInCodeIsRefused) {
 }
 
 }  // namespace
+}  // namespace test_scenario_text
 }  // namespace newtop

@@ -10,6 +10,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_body {
 namespace {
 
 using test::kEps;
@@ -86,4 +87,5 @@ TEST(Body, RejectsAsymmetricTensor) {
 }
 
 }  // namespace
+}  // namespace test_body
 }  // namespace newtop

@@ -8,6 +8,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_field {
 namespace {
 
 using test::kEps;
@@ -90,4 +91,5 @@ TEST(QuadraticField, BrunPlaneNotThroughOriginIsLinearPlusQuadratic) {
 }
 
 }  // namespace
+}  // namespace test_field
 }  // namespace newtop

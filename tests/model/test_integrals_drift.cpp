@@ -11,6 +11,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_integrals_drift {
 namespace {
 
 using test::kEps;
@@ -93,4 +94,5 @@ TEST(IntegralsDrift, SplittingRunKeepsTheCasimirsToRoundOff) {
 }
 
 }  // namespace
+}  // namespace test_integrals_drift
 }  // namespace newtop

@@ -15,6 +15,7 @@
 #include "newtop/phase/section.hpp"
 
 namespace newtop {
+namespace test_state_checks {
 namespace {
 
 const Model& model() {
@@ -98,4 +99,5 @@ TEST(StateChecks, AUnitGammaToTheToleranceIsAccepted) {
 }
 
 }  // namespace
+}  // namespace test_state_checks
 }  // namespace newtop

@@ -11,6 +11,7 @@
 #include "orbit_problems.hpp"
 
 namespace newtop {
+namespace test_beletsky {
 namespace {
 
 // Both sides integrated by Fehlberg 7(8) at 1e-13 over Δν = 12 (two orbits): each is accurate to
@@ -53,4 +54,5 @@ TEST(Beletsky, PlanarRestrictionIsBeletskysEquation) {
 }
 
 }  // namespace
+}  // namespace test_beletsky
 }  // namespace newtop

@@ -11,6 +11,7 @@
 #include "orbit_problems.hpp"
 
 namespace newtop {
+namespace test_debra_delp {
 namespace {
 
 using test::kOrbitEps;
@@ -114,4 +115,5 @@ TEST(DebraDelp, RatiosOutsideTheSquareAreBadInput) {
 }
 
 }  // namespace
+}  // namespace test_debra_delp
 }  // namespace newtop

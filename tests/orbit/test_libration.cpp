@@ -11,6 +11,7 @@
 #include "newtop/orbit/spin_orbit.hpp"
 
 namespace newtop {
+namespace test_libration {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -129,4 +130,5 @@ TEST(Libration, HyperionLikeRotationIsChaoticBetweenTheResonances) {
 }
 
 }  // namespace
+}  // namespace test_libration
 }  // namespace newtop

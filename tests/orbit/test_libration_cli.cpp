@@ -13,6 +13,7 @@
 #include "support/cli.hpp"
 
 namespace newtop {
+namespace test_libration_cli {
 namespace {
 
 TEST(LibrationCli, PitchStateFollowsTheFullModel) {
@@ -190,4 +191,5 @@ TEST(LibrationReport, ChainsTheResonancesAndTheSectionOfThePitchProblem) {
 }
 
 }  // namespace
+}  // namespace test_libration_cli
 }  // namespace newtop

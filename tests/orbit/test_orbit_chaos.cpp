@@ -13,6 +13,7 @@
 #include "orbit_problems.hpp"
 
 namespace newtop::test {
+namespace test_orbit_chaos {
 namespace {
 
 MethodSettings pair(const char* name, double tol) {
@@ -196,4 +197,5 @@ TEST(OrbitChaos, Dop853RunsTheOrbitAsFehlberg) {
 }
 
 }  // namespace
+}  // namespace test_orbit_chaos
 }  // namespace newtop::test

@@ -13,6 +13,7 @@
 #include "orbit_problems.hpp"
 
 namespace newtop {
+namespace test_orbit_equilibria {
 namespace {
 
 using test::kOrbitEps;
@@ -179,4 +180,5 @@ TEST(RelativeEquilibria, RejectsSymmetricBodiesAndNonRotatingOrbits) {
 }
 
 }  // namespace
+}  // namespace test_orbit_equilibria
 }  // namespace newtop

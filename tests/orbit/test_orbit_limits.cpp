@@ -11,6 +11,7 @@
 #include "orbit_problems.hpp"
 
 namespace newtop {
+namespace test_orbit_limits {
 namespace {
 
 using test::kOrbitEps;
@@ -112,4 +113,5 @@ TEST(OrbitLimits, CircularOrbitIsTheZeroEccentricityCase) {
 }
 
 }  // namespace
+}  // namespace test_orbit_limits
 }  // namespace newtop

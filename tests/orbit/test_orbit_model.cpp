@@ -13,6 +13,7 @@
 #include "orbit_problems.hpp"
 
 namespace newtop {
+namespace test_orbit_model {
 namespace {
 
 using test::kOrbitEps;
@@ -242,4 +243,5 @@ TEST(OrbitModel, RelativeStateRoundTrip) {
 }
 
 }  // namespace
+}  // namespace test_orbit_model
 }  // namespace newtop

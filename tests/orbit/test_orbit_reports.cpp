@@ -12,6 +12,7 @@
 #include "orbit_problems.hpp"
 
 namespace newtop {
+namespace test_orbit_reports {
 namespace {
 
 using test::kOrbitEps;
@@ -103,4 +104,5 @@ TEST(OrbitReports, DiagramCountsTheClosedFormRegions) {
 }
 
 }  // namespace
+}  // namespace test_orbit_reports
 }  // namespace newtop

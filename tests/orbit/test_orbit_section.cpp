@@ -16,6 +16,7 @@
 #include "orbit_problems.hpp"
 
 namespace newtop {
+namespace test_orbit_section {
 namespace {
 
 using test::kOrbitEps;
@@ -241,4 +242,5 @@ TEST(OrbitSection, RequestFormAgreesWithThePositionalRunAndSaysNoCrossing) {
 }
 
 }  // namespace
+}  // namespace test_orbit_section
 }  // namespace newtop

@@ -23,6 +23,7 @@
 #endif
 
 namespace newtop {
+namespace test_orbit_splitting {
 namespace {
 
 using test::kOrbitEps;
@@ -230,4 +231,5 @@ TEST(OrbitSplitting, StepIsSymmetric) {
 }
 
 }  // namespace
+}  // namespace test_orbit_splitting
 }  // namespace newtop

@@ -13,6 +13,7 @@
 #include "newtop/orbit/spin_orbit.hpp"
 
 namespace newtop {
+namespace test_spin_orbit {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -174,4 +175,5 @@ TEST(SpinOrbit, PeriodicSolutionIsAFixedPointOfThePeriapsisMap) {
 }
 
 }  // namespace
+}  // namespace test_spin_orbit
 }  // namespace newtop

@@ -11,6 +11,7 @@
 #include "newtop/orbit/spin_orbit.hpp"
 
 namespace newtop {
+namespace test_spin_orbit_shooting {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -111,4 +112,5 @@ TEST(SpinOrbitShooting, GridFindsTheAsymmetricSolution) {
 }
 
 }  // namespace
+}  // namespace test_spin_orbit_shooting
 }  // namespace newtop

@@ -11,6 +11,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_chaos {
 namespace {
 
 using test::kEps;
@@ -221,4 +222,5 @@ TEST(Chaos, BackwardRunGivesTheIndicatorsOfTheBackwardFlow) {
 }
 
 }  // namespace
+}  // namespace test_chaos
 }  // namespace newtop

@@ -16,6 +16,7 @@
 #include "support/problems.hpp"
 
 namespace newtop::phase {
+namespace test_ensemble_tangent {
 namespace {
 
 using test::kEps;
@@ -251,4 +252,5 @@ TEST(EnsembleTangent, RefusesTheSpinSplitAndMismatchedTangents) {
 }
 
 }  // namespace
+}  // namespace test_ensemble_tangent
 }  // namespace newtop::phase

@@ -14,6 +14,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_section {
 namespace {
 
 using phase::Crossing;
@@ -205,9 +206,11 @@ TEST(Section, BackwardRunGivesTheForwardCrossingsReversed) {
 }
 
 }  // namespace
+}  // namespace test_section
 }  // namespace newtop
 
 namespace newtop {
+namespace test_section {
 namespace {
 
 // The request form (phase::section): the same crossings as the positional run, and a status that
@@ -244,4 +247,5 @@ TEST(SectionRequest, SaysWhyTheRunEndedAndAgreesWithThePositionalRun) {
 }
 
 }  // namespace
+}  // namespace test_section
 }  // namespace newtop

@@ -12,6 +12,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_section_accuracy {
 namespace {
 
 using phase::Crossing;
@@ -217,4 +218,5 @@ TEST(SectionAccuracy, AndoyerDepritConventions) {
 }
 
 }  // namespace
+}  // namespace test_section_accuracy
 }  // namespace newtop

@@ -13,6 +13,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_tangent {
 namespace {
 
 using phase::Tangent;
@@ -182,4 +183,5 @@ TEST(TangentMap, StateIsThePlainSteppersState) {
 }
 
 }  // namespace
+}  // namespace test_tangent
 }  // namespace newtop

@@ -13,6 +13,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_tangent_of {
 namespace {
 
 using phase::Tangent;
@@ -129,4 +130,5 @@ TEST(TangentOf, TheNamedTangentStepperIteratesTheSameMethod) {
 }
 
 }  // namespace
+}  // namespace test_tangent_of
 }  // namespace newtop

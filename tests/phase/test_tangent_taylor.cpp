@@ -13,6 +13,7 @@
 #include "support/problems.hpp"
 
 namespace newtop {
+namespace test_tangent_taylor {
 namespace {
 
 using phase::Tangent;
@@ -137,4 +138,5 @@ TEST(TangentTaylor, OtherFieldsAreRefused) {
 }
 
 }  // namespace
+}  // namespace test_tangent_taylor
 }  // namespace newtop

@@ -16,6 +16,7 @@
 #include "support/ensemble.hpp"
 
 namespace newtop {
+namespace test_taylor_ensemble_tangent {
 namespace {
 
 bool same_bits(double a, double b) {
@@ -55,4 +56,5 @@ TEST(TaylorEnsembleTangent, IndicatorsAreChaosRunsBitsForEveryBatchSize) {
 }
 
 }  // namespace
+}  // namespace test_taylor_ensemble_tangent
 }  // namespace newtop

@@ -10,6 +10,7 @@
 #include "newtop/analysis/stability_report.hpp"
 
 namespace newtop {
+namespace test_choice_test {
 namespace {
 
 using Reason = StabilityChoiceError::Reason;
@@ -63,4 +64,5 @@ TEST(StabilityChoice, StateFarFromAFixedPointCarriesItsPolish) {
 }
 
 }  // namespace
+}  // namespace test_choice_test
 }  // namespace newtop

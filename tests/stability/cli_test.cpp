@@ -19,6 +19,7 @@
 #include "newtop/io/scenario.hpp"
 
 namespace newtop {
+namespace test_cli_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -297,4 +298,5 @@ TEST(StabilityCli, UniformGravityAndRotorCases) {
 }
 
 }  // namespace
+}  // namespace test_cli_test
 }  // namespace newtop

@@ -10,6 +10,7 @@
 #include "support.hpp"
 
 namespace newtop {
+namespace test_dynamics_test {
 namespace {
 
 using stability_test::max_departure;
@@ -138,4 +139,5 @@ TEST(StabilityDynamics, ResidualRejectsStatesThatAreNotFixedPoints) {
 }
 
 }  // namespace
+}  // namespace test_dynamics_test
 }  // namespace newtop

@@ -11,6 +11,7 @@
 #include "support.hpp"
 
 namespace newtop {
+namespace test_equilibria_test {
 namespace {
 
 using stability_test::kEps;
@@ -221,4 +222,5 @@ TEST(Equilibria, SymmetricBodyWithAxialOffsetHasACircle) {
 }
 
 }  // namespace
+}  // namespace test_equilibria_test
 }  // namespace newtop

@@ -18,6 +18,7 @@
 #include "support/cli.hpp"
 
 namespace newtop {
+namespace test_output_contract_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -157,4 +158,5 @@ TEST(OutputContract, HumanSummaryNeverPrintsNull) {
 }
 
 }  // namespace
+}  // namespace test_output_contract_test
 }  // namespace newtop

@@ -12,6 +12,7 @@
 #include "support.hpp"
 
 namespace newtop {
+namespace test_polish_test {
 namespace {
 
 using stability_test::kEps;
@@ -127,4 +128,5 @@ TEST(PolishFixedPoint, RefusesAStateFarFromEveryFixedPoint) {
 }
 
 }  // namespace
+}  // namespace test_polish_test
 }  // namespace newtop

@@ -10,6 +10,7 @@
 #include "support.hpp"
 
 namespace newtop {
+namespace test_spin_test {
 namespace {
 
 using stability_test::kEps;
@@ -206,4 +207,5 @@ TEST(SpinStability, ClassifiesTheAxis) {
 }
 
 }  // namespace
+}  // namespace test_spin_test
 }  // namespace newtop

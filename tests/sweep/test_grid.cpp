@@ -14,6 +14,7 @@
 #include "newtop/sweep/sweep.hpp"
 #include "support/cli.hpp"
 
+namespace test_grid {
 namespace {
 
 using newtop::grid_value;
@@ -82,3 +83,4 @@ TEST(Grid, SweepAxisFromStartStopCountIsTheDecimalGrid) {
 }
 
 }  // namespace
+}  // namespace test_grid

@@ -11,6 +11,7 @@
 #include "newtop/sweep/stability_grid.hpp"
 
 namespace newtop {
+namespace test_stability_grid {
 namespace {
 
 /// Spin about z, the largest moment, centre of mass at O: Beletsky's case.
@@ -75,4 +76,5 @@ TEST(StabilityGrid, MomentsBreakingTheTriangleInequalityAreNonphysical) {
 }
 
 }  // namespace
+}  // namespace test_stability_grid
 }  // namespace newtop

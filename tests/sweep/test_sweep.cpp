@@ -17,6 +17,7 @@
 #include "newtop/sweep/sweep.hpp"
 #include "support/cli.hpp"
 
+namespace test_sweep {
 namespace {
 
 namespace fs = std::filesystem;
@@ -294,3 +295,4 @@ TEST(Sweep, BadSweepFilesGetOneLineAndNoOutput) {
 }
 
 }  // namespace
+}  // namespace test_sweep

@@ -13,6 +13,7 @@
 #include "newtop/sweep/sweep.hpp"
 #include "support/cli.hpp"
 
+namespace test_sweep_checkpoint {
 namespace {
 
 namespace fs = std::filesystem;
@@ -93,3 +94,4 @@ TEST(SweepCheckpoint, TheTransportLineReadsBackAndRefusesAnEditedOne) {
 }
 
 }  // namespace
+}  // namespace test_sweep_checkpoint

@@ -16,6 +16,7 @@
 #include "newtop/sweep/sweep_ensemble.hpp"
 #include "support/cli.hpp"
 
+namespace test_sweep_ensemble {
 namespace {
 
 namespace fs = std::filesystem;
@@ -280,3 +281,4 @@ TEST(SweepEnsemble, MegnoWithTheSpinSplitRunsPointByPoint) {
 }
 
 }  // namespace
+}  // namespace test_sweep_ensemble

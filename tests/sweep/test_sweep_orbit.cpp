@@ -20,6 +20,7 @@
 #include "newtop/sweep/sweep.hpp"
 #include "support/cli.hpp"
 
+namespace test_sweep_orbit {
 namespace {
 
 namespace fs = std::filesystem;
@@ -315,3 +316,4 @@ TEST(SweepOrbit, QuantitiesThatDoNotApplyAreRefusedNamingTheModel) {
 }
 
 }  // namespace
+}  // namespace test_sweep_orbit

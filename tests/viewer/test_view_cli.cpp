@@ -10,6 +10,7 @@
 #include "page.hpp"
 #include "support/cli.hpp"
 
+namespace test_view_cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -140,3 +141,4 @@ TEST(View, ParsedColumnsKeepTheNumbersExactly) {
 }
 
 }  // namespace
+}  // namespace test_view_cli
