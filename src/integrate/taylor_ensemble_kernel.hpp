@@ -98,27 +98,58 @@ template <class F, class V>
   z.t = F::fma(g[c2], w[c1], z.t);
 }
 
+// The model's numbers of each lane (consts, the layout above).
+template <class V, int L>
+struct LaneConstants {
+  V inv_i[3], k[3], b[3], d_spin[3], d_field[3];
+  explicit LaneConstants(const double* consts) {
+    for (int c = 0; c < 3; ++c) {
+      inv_i[c] = load<V>(consts + (0 + c) * L);
+      k[c] = load<V>(consts + (3 + c) * L);
+      b[c] = load<V>(consts + (6 + c) * L);
+      d_spin[c] = load<V>(consts + (9 + c) * L);
+      d_field[c] = load<V>(consts + (12 + c) * L);
+    }
+  }
+};
+
+// The coefficient 0 of the series through x, written to series; ω^[0] and γ^[0] into w0, g0.
+template <class V, int L>
+[[gnu::always_inline]] inline void start_series(const LaneConstants<V, L>& q, const double* x,
+                                                double* series, V (&w0)[3], V (&g0)[3]) {
+  for (int c = 0; c < 3; ++c) {
+    const V m = load<V>(x + c * L);
+    g0[c] = load<V>(x + (3 + c) * L);
+    store(series + c * L, m);
+    store(series + (3 + c) * L, g0[c]);
+    w0[c] = (m - q.k[c]) * q.inv_i[c];
+  }
+}
+
+// The coefficient n + 1 of the component c from its sums z of order n (expand_lanes's last lines):
+// m^[n+1] and γ^[n+1] written to next, ω^[n+1] and γ^[n+1] into w1, g1.
+template <class V, int L>
+[[gnu::always_inline]] inline void finish_component(const LaneConstants<V, L>& q, int c,
+                                                    const V (&w)[3], const V (&g)[3],
+                                                    const Sums<V>& z, double inv, double* next,
+                                                    V (&w1)[3], V (&g1)[3]) {
+  const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+  const V linear = (q.k[c1] * w[c2] - q.k[c2] * w[c1]) + (g[c1] * q.b[c2] - g[c2] * q.b[c1]);
+  const V m_next = (q.d_spin[c] * z.p + q.d_field[c] * z.rs + linear) * inv;
+  store(next + c * L, m_next);
+  w1[c] = m_next * q.inv_i[c];
+  g1[c] = (z.s - z.t) * inv;
+  store(next + (3 + c) * L, g1[c]);
+}
+
 // The coefficients 0..order of the series through x (expand_lanes without attitude).
 // One component after another (eight sums in registers, not 24), each sum over j in expand_lanes's
 // order: the same bits. F::fma(a, b, c): a·b + c rounded once, lane by lane.
 template <class V, int L, class F>
 void expand(const double* consts, const double* x, int order, double* series) {
-  V inv_i[3], k[3], b[3], d_spin[3], d_field[3];
-  for (int c = 0; c < 3; ++c) {
-    inv_i[c] = load<V>(consts + (0 + c) * L);
-    k[c] = load<V>(consts + (3 + c) * L);
-    b[c] = load<V>(consts + (6 + c) * L);
-    d_spin[c] = load<V>(consts + (9 + c) * L);
-    d_field[c] = load<V>(consts + (12 + c) * L);
-  }
+  const LaneConstants<V, L> q(consts);
   V w[K][3], g[K][3];  // ω^[n], γ^[n]
-  for (int c = 0; c < 3; ++c) {
-    const V m = load<V>(x + c * L);
-    g[0][c] = load<V>(x + (3 + c) * L);
-    store(series + c * L, m);
-    store(series + (3 + c) * L, g[0][c]);
-    w[0][c] = (m - k[c]) * inv_i[c];
-  }
+  start_series(q, x, series, w[0], g[0]);
   for (int n = 0; n < order; ++n) {
     const int last_pair = (n - 1) / 2;
     const double inv = kInverse[static_cast<std::size_t>(n)];
@@ -142,13 +173,7 @@ void expand(const double* consts, const double* x, int order, double* series) {
       } else {
         pair<F>(w[0], g[0], w[n], g[n], c1, c2, a);
       }
-      const V linear =
-          (k[c1] * w[n][c2] - k[c2] * w[n][c1]) + (g[n][c1] * b[c2] - g[n][c2] * b[c1]);
-      const V m_next = (d_spin[c] * a.p + d_field[c] * a.rs + linear) * inv;
-      store(next + c * L, m_next);
-      w[n + 1][c] = m_next * inv_i[c];
-      g[n + 1][c] = (a.s - a.t) * inv;
-      store(next + (3 + c) * L, g[n + 1][c]);
+      finish_component(q, c, w[n], g[n], a, inv, next, w[n + 1], g[n + 1]);
     };
     component(std::integral_constant<int, 0>{});
     component(std::integral_constant<int, 1>{});

@@ -23,22 +23,9 @@ template <class F, class V>
 
 template <class V, int L, class F>
 void expand_wide(const double* consts, const double* x, int order, double* series) {
-  V inv_i[3], k[3], b[3], d_spin[3], d_field[3];
-  for (int c = 0; c < 3; ++c) {
-    inv_i[c] = load<V>(consts + (0 + c) * L);
-    k[c] = load<V>(consts + (3 + c) * L);
-    b[c] = load<V>(consts + (6 + c) * L);
-    d_spin[c] = load<V>(consts + (9 + c) * L);
-    d_field[c] = load<V>(consts + (12 + c) * L);
-  }
+  const LaneConstants<V, L> q(consts);
   V w[K][3], g[K][3];  // ω^[n], γ^[n]
-  for (int c = 0; c < 3; ++c) {
-    const V m = load<V>(x + c * L);
-    g[0][c] = load<V>(x + (3 + c) * L);
-    store(series + c * L, m);
-    store(series + (3 + c) * L, g[0][c]);
-    w[0][c] = (m - k[c]) * inv_i[c];
-  }
+  start_series(q, x, series, w[0], g[0]);
   for (int n = 0; n < order; ++n) {
     const int last_pair = (n - 1) / 2;
     const double inv = kInverse[static_cast<std::size_t>(n)];
@@ -66,16 +53,8 @@ void expand_wide(const double* consts, const double* x, int order, double* serie
     } else {
       pair3<F>(w[0], g[0], w[n], g[n], a);
     }
-    for (int c = 0; c < 3; ++c) {
-      const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-      const V linear =
-          (k[c1] * w[n][c2] - k[c2] * w[n][c1]) + (g[n][c1] * b[c2] - g[n][c2] * b[c1]);
-      const V m_next = (d_spin[c] * a[c].p + d_field[c] * a[c].rs + linear) * inv;
-      store(next + c * L, m_next);
-      w[n + 1][c] = m_next * inv_i[c];
-      g[n + 1][c] = (a[c].s - a[c].t) * inv;
-      store(next + (3 + c) * L, g[n + 1][c]);
-    }
+    for (int c = 0; c < 3; ++c)
+      finish_component(q, c, w[n], g[n], a[c], inv, next, w[n + 1], g[n + 1]);
   }
 }
 
