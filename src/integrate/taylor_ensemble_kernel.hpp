@@ -199,25 +199,18 @@ template <class V>
 template <class V, int L, class F>
 void expand_tangent(const double* consts, const double* series, const double* v, int order,
                     double* tangent) {
-  V inv_i[3], k[3], b[3], d_spin[3], d_field[3];
-  for (int c = 0; c < 3; ++c) {
-    inv_i[c] = load<V>(consts + (0 + c) * L);
-    k[c] = load<V>(consts + (3 + c) * L);
-    b[c] = load<V>(consts + (6 + c) * L);
-    d_spin[c] = load<V>(consts + (9 + c) * L);
-    d_field[c] = load<V>(consts + (12 + c) * L);
-  }
+  const LaneConstants<V, L> q(consts);
   V xw[K][3], xg[K][3], dw[K][3], dg[K][3];  // the state's ω^[n], γ^[n]; the tangent's
   for (int n = 0; n < order; ++n) {
     for (int c = 0; c < 3; ++c) {
       const V m = load<V>(series + (6 * n + c) * L);
-      xw[n][c] = (n == 0 ? m - k[c] : m) * inv_i[c];
+      xw[n][c] = (n == 0 ? m - q.k[c] : m) * q.inv_i[c];
       xg[n][c] = load<V>(series + (6 * n + 3 + c) * L);
     }
   }
   for (int c = 0; c < 3; ++c) {
     const V m = load<V>(v + c * L);
-    dw[0][c] = m * inv_i[c];
+    dw[0][c] = m * q.inv_i[c];
     dg[0][c] = load<V>(v + (3 + c) * L);
     store(tangent + c * L, m);
     store(tangent + (3 + c) * L, dg[0][c]);
@@ -293,12 +286,12 @@ void expand_tangent(const double* consts, const double* series, const double* v,
     component(std::integral_constant<int, 2>{});
     for (int c = 0; c < 3; ++c) {
       const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-      const V dm =
-          (d_spin[c] * z[c].p + d_field[c] * z[c].rs + (k[c1] * dw[n][c2] - k[c2] * dw[n][c1]) +
-           (dg[n][c1] * b[c2] - dg[n][c2] * b[c1])) *
-          inv;
+      const V dm = (q.d_spin[c] * z[c].p + q.d_field[c] * z[c].rs +
+                    (q.k[c1] * dw[n][c2] - q.k[c2] * dw[n][c1]) +
+                    (dg[n][c1] * q.b[c2] - dg[n][c2] * q.b[c1])) *
+                   inv;
       store(next + c * L, dm);
-      dw[n + 1][c] = dm * inv_i[c];
+      dw[n + 1][c] = dm * q.inv_i[c];
       dg[n + 1][c] = (z[c].s - z[c].t) * inv;
       store(next + (3 + c) * L, dg[n + 1][c]);
     }
