@@ -16,7 +16,7 @@ using Complex = std::complex<double>;
 using Sums = std::array<Complex, 2>;
 
 // Newton steps to polish a companion-matrix root of the cubic (quadratic convergence).
-constexpr int kPolishSteps = 3;
+constexpr int kPrymPolishSteps = 3;
 // Gauss–Legendre nodes per interval: spectral accuracy for the analytic state and sums of a
 // motion.
 constexpr int kNodes = 12;
@@ -182,7 +182,7 @@ BrunPrymDivisor brun_prym_zeros(const BrunCurve& k, const BrunPrymLine& l) {
   BrunPrymDivisor d{};
   for (int r = 0; r < 3; ++r) {
     Complex u = z[r];
-    for (int it = 0; it < kPolishSteps; ++it) {
+    for (int it = 0; it < kPrymPolishSteps; ++it) {
       const Complex f = ((a[3] * u + a[2]) * u + a[1]) * u + a[0];
       const Complex df = (3.0 * a[3] * u + 2.0 * a[2]) * u + a[1];
       if (df == Complex(0.0)) break;

@@ -22,7 +22,7 @@ using Line = Eigen::Vector3cd;
 // segment, the nearest singularity is ≥ 4 half-lengths away: Bernstein ellipse ρ ≈ 8, error
 // ~ρ^(−24) ≈ 2e-22, far below round-off. (A bound node to node only, 12 times looser, left
 // errors of 2e-8 on some nodes.)
-constexpr int kNodes = 12;
+constexpr int kInversionNodes = 12;
 constexpr double kMove = 0.5;
 // Table nodes per side of the torus cell (a query starts at most 1/16 of a cell away).
 constexpr int kGrid = 8;
@@ -89,7 +89,7 @@ struct Chord {
 
 /// S(D(Lb)) − S(D(La)) along the straight segment of lines from La (whose divisor is da).
 Chord chord(const Context& c, const Line& La, const BrunPrymDivisor& da, const Line& Lb) {
-  using G = boost::math::quadrature::gauss<double, kNodes>;
+  using G = boost::math::quadrature::gauss<double, kInversionNodes>;
   const auto& x = G::abscissa();
   const auto& w = G::weights();
   const Line dL = Lb - La;
@@ -102,7 +102,7 @@ Chord chord(const Context& c, const Line& La, const BrunPrymDivisor& da, const L
     out.sum[0] += weight * r[0], out.sum[1] += weight * r[1];
     return true;
   };
-  const int half = kNodes / 2;
+  const int half = kInversionNodes / 2;
   for (int i = half - 1; i >= 0; --i) {
     if (!visit(0.5 * (1 - x[i]), 0.5 * w[i])) return out;
   }

@@ -42,9 +42,10 @@ constexpr int kLocationBits = 50;
 constexpr std::uintmax_t kLocationIterations = 100;
 
 /// The family in the (n + 1)-vector X = (u, p).
-class Curve {
+class ContinuationCurve {
  public:
-  Curve(const ContinuationProblem& p, const ContinuationSettings& s) : pr_(p), set_(s) {}
+  ContinuationCurve(const ContinuationProblem& p, const ContinuationSettings& s)
+      : pr_(p), set_(s) {}
   int n() const { return pr_.unknowns; }
 
   VectorXd residual(const VectorXd& x) const {
@@ -145,8 +146,9 @@ class Curve {
 double test_value(const FamilyPoint& f, int j) { return j < 0 ? f.tangent_parameter : f.tests[j]; }
 
 /// The zeros of the test functions between two accepted points a and b, located along the chord.
-void locate_events(const Curve& c, const VectorXd& xa, const FamilyPoint& fa, const VectorXd& xb,
-                   const FamilyPoint& fb, std::vector<BifurcationEvent>& events) {
+void locate_events(const ContinuationCurve& c, const VectorXd& xa, const FamilyPoint& fa,
+                   const VectorXd& xb, const FamilyPoint& fb,
+                   std::vector<BifurcationEvent>& events) {
   const double length = (xb - xa).norm();
   if (!(length > 0)) return;
   const VectorXd d = (xb - xa) / length;
@@ -180,7 +182,7 @@ void locate_events(const Curve& c, const VectorXd& xa, const FamilyPoint& fa, co
 }
 
 /// Newton's method in u at fixed p (the start, and the last point exactly at p_end).
-bool solve_at(const Curve& c, VectorXd& x) {
+bool solve_at(const ContinuationCurve& c, VectorXd& x) {
   VectorXd normal = VectorXd::Zero(c.n() + 1);
   normal[c.n()] = 1.0;
   return c.correct(x, normal, x).has_value();
@@ -197,7 +199,7 @@ struct Ends {
 
 /// Predictor–corrector steps from the accepted point x (tangent t, already the family's last
 /// point) until an end.
-void march(const Curve& c, VectorXd x, VectorXd t, const Ends& ends, Family& fam) {
+void march(const ContinuationCurve& c, VectorXd x, VectorXd t, const Ends& ends, Family& fam) {
   const ContinuationSettings& settings = c.settings();
   const int n = c.n();
   const double dir = ends.p_end > ends.p0 ? 1.0 : -1.0;
@@ -281,7 +283,7 @@ Family continue_family(const ContinuationProblem& problem, const VectorXd& u0, d
     throw InputError("continuation: expected a finite start of " +
                      std::to_string(problem.unknowns) + " values and a range p0 != p_end");
   }
-  const Curve c(problem, settings);
+  const ContinuationCurve c(problem, settings);
   const int n = problem.unknowns;
   const double dir = p_end > p0 ? 1.0 : -1.0;
   VectorXd x(n + 1);
@@ -314,7 +316,7 @@ Family continue_branch(const ContinuationProblem& problem, const VectorXd& u_sta
   }
   ContinuationProblem pr = problem;
   pr.branch_points = true;
-  const Curve c(pr, settings);
+  const ContinuationCurve c(pr, settings);
   VectorXd star(n + 1);
   star << u_star, p_star;
   const VectorXd d = direction.normalized();
@@ -326,7 +328,7 @@ Family continue_branch(const ContinuationProblem& problem, const VectorXd& u_sta
   ContinuationSettings first = settings;
   first.max_newton *= 4;
   VectorXd x = star + settings.switch_step * d;
-  if (!Curve(pr, first).correct(x, d, x)) {
+  if (!ContinuationCurve(pr, first).correct(x, d, x)) {
     throw InputError("branch: Newton's method found no point of the new branch at " +
                      format_number(settings.switch_step) +
                      " from the branch point at p = " + format_number(p_star));

@@ -18,7 +18,6 @@ namespace {
 
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat63 = Eigen::Matrix<double, 6, 3>;
-constexpr double kPi = std::numbers::pi;
 // Bulirsch–Stoer tolerance of the shooting (absolute and relative).
 constexpr double kShootingTolerance = 1e-12;
 // A multiplier counts as on the unit circle within this (the shooting's accuracy, squared-rooted
@@ -176,7 +175,7 @@ Family lyapunov_family(const QuadraticModel& model, const Vec3& gamma_eq, int mo
   pr.tests = {{BifurcationType::flip, {}}, {BifurcationType::branch_point, {}}};
   Eigen::VectorXd u0 = Eigen::VectorXd::Zero(10);
   u0.head<6>() = xe + eps * a;
-  u0[6] = 2 * kPi / omega;
+  u0[6] = 2 * std::numbers::pi / omega;
   return continue_family(pr, u0, p0, p1, settings);
 }
 

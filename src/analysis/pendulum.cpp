@@ -14,12 +14,11 @@
 namespace newtop {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // p, q, γ3 below this (in units of |ω| and 1) count as zero: values written to 15 digits.
 constexpr double kPlaneTolerance = 1e-12;
 // Scan step when bracketing the turning points: far finer than the π/2 between extrema of V.
 constexpr int kScanPoints = 720;
-constexpr int kNewtonIterations = 60;
+constexpr int kPendulumNewtonIterations = 60;
 
 double dpotential(const Pendulum& p, double phi) {
   return -p.mgx * std::sin(phi) - p.mgy * std::cos(phi) +
@@ -29,7 +28,7 @@ double dpotential(const Pendulum& p, double phi) {
 /// The turning point nearest φ0 in direction dir (±1): first zero of h − V(φ).
 double turning_point(const Pendulum& p, double dir) {
   auto g = [&](double phi) { return p.h - pendulum_potential(p, phi); };
-  const double step = 2 * kPi / kScanPoints;
+  const double step = 2 * std::numbers::pi / kScanPoints;
   double a = p.phi0;
   for (int i = 1; i <= kScanPoints; ++i) {
     const double b = p.phi0 + dir * step * i;
@@ -70,11 +69,13 @@ void setup_closed_form(Pendulum& p) {
   const double kappa = p.lambda_ * (p.B - p.A) / p.C;
   if (kappa == 0.0) {
     p.kind = p.r0 == 0.0 ? PendulumKind::equilibrium : PendulumKind::rotation;
-    p.period = p.r0 == 0.0 ? std::numeric_limits<double>::infinity() : 2 * kPi / std::abs(p.r0);
+    p.period = p.r0 == 0.0 ? std::numeric_limits<double>::infinity()
+                           : 2 * std::numbers::pi / std::abs(p.r0);
     return;
   }
   p.omega0 = std::sqrt(std::abs(kappa));
-  p.theta0 = std::remainder(2 * p.phi0 - (kappa > 0 ? 0.0 : kPi), 2 * kPi);
+  p.theta0 =
+      std::remainder(2 * p.phi0 - (kappa > 0 ? 0.0 : std::numbers::pi), 2 * std::numbers::pi);
   const double s = std::sin(0.5 * p.theta0);
   const double k2 = (p.r0 * p.r0 + p.omega0 * p.omega0 * s * s) / (p.omega0 * p.omega0);
   p.sense = p.r0 < 0 ? -1.0 : 1.0;
@@ -101,10 +102,10 @@ void setup_quadrature(Pendulum& p) {
   // The highest V on the circle: sampled, then the best sample refined by Brent's method.
   double vmax = -std::numeric_limits<double>::infinity(), at = 0;
   for (int i = 0; i < kScanPoints; ++i) {
-    const double phi = 2 * kPi * i / kScanPoints;
+    const double phi = 2 * std::numbers::pi * i / kScanPoints;
     if (pendulum_potential(p, phi) > vmax) vmax = pendulum_potential(p, phi), at = phi;
   }
-  const double step = 2 * kPi / kScanPoints;
+  const double step = 2 * std::numbers::pi / kScanPoints;
   const auto best = boost::math::tools::brent_find_minima(
       [&](double phi) { return -pendulum_potential(p, phi); }, at - step, at + step, 52);
   vmax = std::max(vmax, -best.second);
@@ -124,9 +125,10 @@ void setup_quadrature(Pendulum& p) {
     p.c = 0.5 * (lo + hi);
     p.d = 0.5 * (hi - lo);
     p.alpha0 = std::acos(std::clamp((p.c - p.phi0) / p.d, -1.0, 1.0));
-    if (p.r0 < 0) p.alpha0 = 2 * kPi - p.alpha0;
+    if (p.r0 < 0) p.alpha0 = 2 * std::numbers::pi - p.alpha0;
   }
-  p.period = integrate_one_period([&](double a) { return unfolded(p, a)[1]; }, 2 * kPi);
+  p.period =
+      integrate_one_period([&](double a) { return unfolded(p, a)[1]; }, 2 * std::numbers::pi);
 }
 
 std::array<double, 2> closed_form_angle(const Pendulum& p, double t) {
@@ -142,7 +144,7 @@ std::array<double, 2> closed_form_angle(const Pendulum& p, double t) {
   const double K = boost::math::ellint_1(p.modulus);
   const double n = std::round(v / (2 * K));
   const double sn = boost::math::jacobi_elliptic(p.modulus, v - 2 * K * n, &cn, &dn);
-  const double am = std::atan2(sn, cn) + n * kPi;
+  const double am = std::atan2(sn, cn) + n * std::numbers::pi;
   return {p.phi0 + p.sense * am - 0.5 * p.theta0, p.sense * p.omega0 / p.modulus * dn};
 }
 
@@ -152,8 +154,8 @@ std::array<double, 2> quadrature_angle(const Pendulum& p, double t) {
   const double turns = std::floor(t / p.period);
   const double rest = t - turns * p.period;
   // Solve ∫_{α0}^{α0+x} G = rest for x ∈ [0, 2π] by safeguarded Newton.
-  double x = 2 * kPi * rest / p.period, lo = 0.0, hi = 2 * kPi;
-  for (int it = 0; it < kNewtonIterations; ++it) {
+  double x = 2 * std::numbers::pi * rest / p.period, lo = 0.0, hi = 2 * std::numbers::pi;
+  for (int it = 0; it < kPendulumNewtonIterations; ++it) {
     const double f = integrate_interval(G, p.alpha0, p.alpha0 + x) - rest;
     if (f > 0)
       hi = x;
@@ -165,7 +167,7 @@ std::array<double, 2> quadrature_angle(const Pendulum& p, double t) {
     x = next;
     if (done) break;
   }
-  const double alpha = p.alpha0 + x + 2 * kPi * turns;
+  const double alpha = p.alpha0 + x + 2 * std::numbers::pi * turns;
   const auto [phi, dt] = unfolded(p, alpha);
   if (p.kind == PendulumKind::rotation) return {phi, p.sense / dt};
   return {phi, p.d * std::sin(alpha) / dt};

@@ -7,7 +7,7 @@
 namespace newtop {
 namespace {
 
-void check_finite(const char* name, const Vec3& v) {
+void check_finite_vector(const char* name, const Vec3& v) {
   if (!v.allFinite()) {
     throw InputError(std::string(name) + ": expected finite numbers, found " + format_vector(v));
   }
@@ -16,11 +16,11 @@ void check_finite(const char* name, const Vec3& v) {
 }  // namespace
 
 Polyhedron make_box(const Vec3& dimensions, double density, const Vec3& center) {
-  check_finite("dimensions", dimensions);
+  check_finite_vector("dimensions", dimensions);
   if (!(dimensions.minCoeff() > 0)) {
     throw InputError("dimensions: expected three lengths > 0, found " + format_vector(dimensions));
   }
-  check_finite("center", center);
+  check_finite_vector("center", center);
   std::vector<Vec3> v;
   for (int i = 0; i < 8; ++i) {
     const Vec3 s((i & 1) ? 0.5 : -0.5, (i & 2) ? 0.5 : -0.5, (i & 4) ? 0.5 : -0.5);

@@ -192,13 +192,13 @@ Mat3 symmetric(const double (&m)[6]) {
 }
 
 /// The sums of the closed form over all faces and edges, in fixed blocks added in order.
-struct Sums {
+struct FaceEdgeSums {
   double edge_sum, face_sum;  // Σ_e r·E r L, Σ_f (n·r)² ω
   Vec3 edge_grad, face_grad;  // Σ_e E r L, Σ_f n (n·r) ω
   Mat3 edge_hess, face_hess;  // Σ_e E L, Σ_f n nᵀ ω (the latter when asked)
 };
 
-Sums sums(const Polyhedron& p, const Vec3& x, int threads, bool hessian) {
+FaceEdgeSums sums(const Polyhedron& p, const Vec3& x, int threads, bool hessian) {
   const Polyhedron::Streams& S = p.streams();
   const int nf = static_cast<int>(S.fa.size());
   const int ne = static_cast<int>(S.ei.size());
@@ -245,14 +245,14 @@ Sums sums(const Polyhedron& p, const Vec3& x, int threads, bool hessian) {
 }  // namespace
 
 Attraction attraction(const Polyhedron& p, const Vec3& x, int threads) {
-  const Sums t = sums(p, x, threads, false);
+  const FaceEdgeSums t = sums(p, x, threads, false);
   const double sigma = p.density();
   const Vec3 grad = sigma * (t.face_grad - t.edge_grad);
   return {0.5 * sigma * (t.edge_sum - t.face_sum), grad, grad.cross(x)};
 }
 
 GravityGradient gravity_gradient(const Polyhedron& p, const Vec3& x, int threads) {
-  const Sums t = sums(p, x, threads, true);
+  const FaceEdgeSums t = sums(p, x, threads, true);
   const double sigma = p.density();
   const Vec3 grad = sigma * (t.face_grad - t.edge_grad);
   GravityGradient g;

@@ -18,14 +18,14 @@ namespace {
 // An attribute count beyond this is no TetGen file; it keeps the expected line length small.
 constexpr std::int64_t kMaxAttributes = 1024;
 
-struct Header {
+struct TetgenHeader {
   std::int64_t count = 0;
   std::vector<std::int64_t> values;  // the other header integers
   int line = 0;
 };
 
-Header read_header(const std::string& path, Lines& lines, std::size_t n, std::int64_t limit,
-                   const char* form) {
+TetgenHeader read_tetgen_header(const std::string& path, Lines& lines, std::size_t n,
+                                std::int64_t limit, const char* form) {
   const auto l = lines.next();
   if (!l) fail({path}, std::string("expected a header `") + form + "`, found nothing");
   std::vector<std::string_view> tok;
@@ -35,7 +35,7 @@ Header read_header(const std::string& path, Lines& lines, std::size_t n, std::in
     fail(at, std::string("expected a header `") + form + "`, found " + std::to_string(tok.size()) +
                  " values");
   }
-  Header h;
+  TetgenHeader h;
   h.line = l->number;
   h.count = integer_in(at, "count", tok[0], 0, limit);
   for (std::size_t k = 1; k < n; ++k) {
@@ -55,7 +55,7 @@ void expect_label(const Where& at, const std::string& what, std::string_view tok
   }
 }
 
-void check_end(const std::string& path, Lines& lines, std::int64_t count, const char* what) {
+void check_tetgen_end(const std::string& path, Lines& lines, std::int64_t count, const char* what) {
   if (const auto extra = lines.next()) {
     fail({path, extra->number}, "expected the end of the file after the " + std::to_string(count) +
                                     " " + what + " the header announces, found more data");
@@ -65,7 +65,8 @@ void check_end(const std::string& path, Lines& lines, std::int64_t count, const 
 /// The nodes; `base` receives the first node's index (0 or 1).
 std::vector<Vec3> read_nodes(const std::string& path, std::string_view bytes, std::int64_t& base) {
   Lines lines(bytes, '#');
-  const Header h = read_header(path, lines, 4, kMaxVertices, "count 3 attributes markers");
+  const TetgenHeader h =
+      read_tetgen_header(path, lines, 4, kMaxVertices, "count 3 attributes markers");
   const Where at_head{path, h.line};
   if (h.values[0] != 3)
     fail(at_head, "dimension: expected 3, found " + std::to_string(h.values[0]));
@@ -99,7 +100,7 @@ std::vector<Vec3> read_nodes(const std::string& path, std::string_view bytes, st
                        finite_number(at, what, tok[3]));
     for (std::size_t c = 4; c < tok.size(); ++c) (void)finite_number(at, what, tok[c]);
   }
-  check_end(path, lines, h.count, "nodes");
+  check_tetgen_end(path, lines, h.count, "nodes");
   return nodes;
 }
 
@@ -112,7 +113,7 @@ Mesh read_tetgen(const std::string& node_path, std::string_view node_bytes,
   mesh.vertices = read_nodes(node_path, node_bytes, base);
   const auto nv = static_cast<std::int64_t>(mesh.vertices.size());
   Lines lines(face_bytes, '#');
-  const Header h = read_header(face_path, lines, 2, kMaxFaces, "count markers");
+  const TetgenHeader h = read_tetgen_header(face_path, lines, 2, kMaxFaces, "count markers");
   if (h.values[0] != 0 && h.values[0] != 1) {
     fail({face_path, h.line}, "markers: expected 0 or 1, found " + std::to_string(h.values[0]));
   }
@@ -142,7 +143,7 @@ Mesh read_tetgen(const std::string& node_path, std::string_view node_bytes,
       (void)integer(at, "face " + std::to_string(first + k), tok[c]);
     }
   }
-  check_end(face_path, lines, h.count, "faces");
+  check_tetgen_end(face_path, lines, h.count, "faces");
   return mesh;
 }
 

@@ -22,18 +22,19 @@ namespace {
 constexpr double kUnitTolerance = 1e-12;
 
 const std::vector<std::string> kOrbitSections{"body", "orbit", "initial", "integrate", "output"};
-const std::vector<std::string> kBodyKeys{"inertia", "inertia_tensor", "mass", "center_of_mass",
-                                         "gyrostat"};
+const std::vector<std::string> kOrbitBodyKeys{"inertia", "inertia_tensor", "mass", "center_of_mass",
+                                              "gyrostat"};
 const std::vector<std::string> kOrbitKeys{
     "kind", "mu", "radius", "rate", "semi_major_axis", "eccentricity", "true_anomaly"};
-const std::vector<std::string> kInitialKeys{"omega",           "gamma",          "normal",
-                                            "quaternion",      "euler_321",      "roll_pitch_yaw",
-                                            "lvlh_quaternion", "omega_relative", "normalize"};
-const std::vector<std::string> kIntegrateKeys{"method", "step", "tol", "t_end", "t0", "max_steps"};
-const std::vector<std::string> kOutputKeys{"file", "every"};
+const std::vector<std::string> kOrbitInitialKeys{
+    "omega",          "gamma",           "normal",         "quaternion", "euler_321",
+    "roll_pitch_yaw", "lvlh_quaternion", "omega_relative", "normalize"};
+const std::vector<std::string> kOrbitIntegrateKeys{"method", "step", "tol",
+                                                   "t_end",  "t0",   "max_steps"};
+const std::vector<std::string> kOrbitOutputKeys{"file", "every"};
 
 /// [field] and [mass_model] are named as such; then unknown sections and keys, in every section.
-void check_vocabulary(const toml::table& doc, const std::string& source) {
+void check_orbit_vocabulary(const toml::table& doc, const std::string& source) {
   TableReader top(doc, source, "");
   if (doc.contains("field")) {
     top.fail("field", "an orbit scenario has no [field] (the field is the orbit's): remove it");
@@ -43,11 +44,11 @@ void check_vocabulary(const toml::table& doc, const std::string& source) {
   }
   top.check_keys(kOrbitSections);
   const std::pair<const char*, const std::vector<std::string>*> sections[] = {
-      {"body", &kBodyKeys},
+      {"body", &kOrbitBodyKeys},
       {"orbit", &kOrbitKeys},
-      {"initial", &kInitialKeys},
-      {"integrate", &kIntegrateKeys},
-      {"output", &kOutputKeys}};
+      {"initial", &kOrbitInitialKeys},
+      {"integrate", &kOrbitIntegrateKeys},
+      {"output", &kOrbitOutputKeys}};
   for (const auto& [name, keys] : sections) {
     if (const toml::table* t = doc[name].as_table())
       TableReader(*t, source, name).check_keys(*keys);
@@ -103,7 +104,7 @@ std::variant<CircularOrbit, EllipticOrbit> read_orbit(TableReader& r) {
 
 /// 3-2-1 (yaw ψ about e_n, pitch θ about the new e_t, roll φ about the new e_r) rotation: the
 /// body axes in orbital components, R = R_n(ψ) R_t(θ) R_r(φ).
-Mat3 euler_321(const Vec3& a) {
+Mat3 rotation_from_euler_321(const Vec3& a) {
   return (Eigen::AngleAxisd(a[0], Vec3::UnitZ()) * Eigen::AngleAxisd(a[1], Vec3::UnitY()) *
           Eigen::AngleAxisd(a[2], Vec3::UnitX()))
       .toRotationMatrix();
@@ -179,14 +180,14 @@ OrbitState read_initial(const toml::table& t, TableReader& r, const Body& body, 
     return state_from_relative(body, P.transpose() * F, P.transpose() * w_rel, rate);
   }
   // Body axes in orbital components (the user's body frame).
-  const Mat3 R =
-      q ? read_quaternion(t, r, normalize).toRotationMatrix() : euler_321(r.vec3("euler_321"));
+  const Mat3 R = q ? read_quaternion(t, r, normalize).toRotationMatrix()
+                   : rotation_from_euler_321(r.vec3("euler_321"));
   r.finish();
   // The orbital axes in the user's body components are the columns of Rᵀ; in principal axes Pᵀ Rᵀ.
   return state_from_relative(body, P.transpose() * R.transpose(), P.transpose() * w_rel, rate);
 }
 
-IntegrateSection read_integrate(TableReader& r) {
+IntegrateSection read_orbit_integrate(TableReader& r) {
   IntegrateSection s;
   s.method = r.optional_string("method");
   if (r.has("step") && r.has("tol")) {
@@ -207,7 +208,7 @@ IntegrateSection read_integrate(TableReader& r) {
   return s;
 }
 
-OutputSection read_output(TableReader& r) {
+OutputSection read_orbit_output(TableReader& r) {
   OutputSection s;
   s.file = r.optional_string("file");
   if (s.file && s.file->empty()) r.fail("file", "expected a file name, found an empty string");
@@ -287,7 +288,7 @@ bool is_orbit_scenario(const std::string& path) {
 
 OrbitScenario parse_orbit_scenario(const std::string& text, const std::string& source) {
   const toml::table doc = parse_toml(text, source);
-  check_vocabulary(doc, source);
+  check_orbit_vocabulary(doc, source);
   TableReader top(doc, source, "");
   auto section = [&](const std::string& name, bool required) -> const toml::table* {
     const toml::table* t = top.table(name);
@@ -309,11 +310,11 @@ OrbitScenario parse_orbit_scenario(const std::string& text, const std::string& s
   check_orbit_magnitudes(s, orbit_reader, initial);
   if (const toml::table* t = section("integrate", false)) {
     TableReader r(*t, source, "integrate");
-    s.integrate = read_integrate(r);
+    s.integrate = read_orbit_integrate(r);
   }
   if (const toml::table* t = section("output", false)) {
     TableReader r(*t, source, "output");
-    s.output = read_output(r);
+    s.output = read_orbit_output(r);
   }
   top.finish();
   return s;

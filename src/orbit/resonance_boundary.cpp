@@ -8,9 +8,7 @@
 
 namespace newtop {
 
-namespace {
-constexpr double kPi = std::numbers::pi;
-}  // namespace
+namespace {}  // namespace
 
 PitchPlanePath pitch_plane_path(const Vec3& inertia, double eccentricity, int p_key, int q_key) {
   for (const int key : {p_key, q_key}) {
@@ -41,8 +39,8 @@ Family resonance_boundary(const PitchPlanePath& path, const BifurcationEvent& ev
         "equation (two multipliers)");
   }
   path(event.value, q1);  // throws for an end outside the problem's domain, before any work
-  const double half = kPi * r.periods, period = 2 * kPi * r.periods;
-  const double target = line + r.half_turns * kPi / 2;
+  const double half = std::numbers::pi * r.periods, period = 2 * std::numbers::pi * r.periods;
+  const double target = line + r.half_turns * std::numbers::pi / 2;
   const BifurcationType type = event.type;
   ContinuationProblem pr;
   pr.unknowns = 2;

@@ -10,7 +10,6 @@ namespace newtop {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // Relative step of the central difference of the residual in the parameter: ε^(1/3).
 constexpr double kParameterStep = 6e-6;
 
@@ -26,7 +25,8 @@ Vec2 null_vector(const Mat2& a) {
 
 /// x(2πN; x0) − x0 − (Mπ, 0), the periodicity residual of the resonance r over its period.
 Vec2 periodicity(const PitchProblem& p, const SpinOrbitResonance& r, const Vec2& x0) {
-  return pitch_advance(p, x0, 0.0, 2 * kPi * r.periods) - x0 - Vec2(r.half_turns * kPi, 0.0);
+  return pitch_advance(p, x0, 0.0, 2 * std::numbers::pi * r.periods) - x0 -
+         Vec2(r.half_turns * std::numbers::pi, 0.0);
 }
 
 }  // namespace
@@ -43,7 +43,7 @@ Family resonance_branch(const PitchPath& path, const BifurcationEvent& event, do
   const bool flip = event.type == BifurcationType::flip;
   const SpinOrbitResonance rb =
       flip ? SpinOrbitResonance{r.p, r.q, 2 * r.periods, 2 * r.half_turns} : r;
-  const double period = 2 * kPi * rb.periods;
+  const double period = 2 * std::numbers::pi * rb.periods;
   const Vec2 star(line, event.point.values[1]);
   // The critical eigenvector of the parent's monodromy: the new branch leaves along (v, 0).
   const Mat2 m = periodic_solution_at(path(event.value), r, line, star[1]).monodromy;

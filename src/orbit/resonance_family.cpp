@@ -10,9 +10,8 @@ namespace newtop {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // Relative step of the central difference of the residual in the parameter: ε^(1/3).
-constexpr double kParameterStep = 6e-6;
+constexpr double kFamilyParameterStep = 6e-6;
 
 }  // namespace
 
@@ -34,14 +33,14 @@ PitchPath inertia_path(const Vec3& inertia, int index, double eccentricity) {
 
 Family resonance_family(const PitchPath& path, double p0, double p1, const SpinOrbitResonance& r,
                         double line, double guess, const ContinuationSettings& settings) {
-  if (line != 0.0 && line != kPi / 2) {
+  if (line != 0.0 && line != std::numbers::pi / 2) {
     throw InputError("line: expected theta(0) = 0 or pi/2 (a reversibility line), found " +
                      format_number(line));
   }
   path(p1);  // throws for an end outside the problem's domain, before any work
   const PitchProblem start = path(p0);
-  const double half = kPi * r.periods;
-  const double target = line + r.half_turns * kPi / 2;
+  const double half = std::numbers::pi * r.periods;
+  const double target = line + r.half_turns * std::numbers::pi / 2;
   const std::vector<PeriodicSolution> found = periodic_solutions(start, r);
   const PeriodicSolution* best = nullptr;
   for (const PeriodicSolution& s : found) {
@@ -64,7 +63,7 @@ Family resonance_family(const PitchPath& path, double p0, double p1, const SpinO
   };
   pr.jacobian = [=, &path](const Eigen::VectorXd& u, double p) {
     const PitchFlow f = pitch_flow(path(p), Vec2(line, u[0]), 0.0, half);
-    const double h = kParameterStep * std::max(1.0, std::abs(p));
+    const double h = kFamilyParameterStep * std::max(1.0, std::abs(p));
     Eigen::MatrixXd j(1, 2);
     double dp = 0.0;
     try {
@@ -82,7 +81,7 @@ Family resonance_family(const PitchPath& path, double p0, double p1, const SpinO
     const PitchFlow f = pitch_flow(problem, Vec2(line, u[0]), 0.0, half);
     FamilyPoint pt;
     pt.values = Eigen::Vector2d(line, u[0]);
-    pt.period = 2 * kPi * r.periods;
+    pt.period = 2 * std::numbers::pi * r.periods;
     pt.multipliers = {s.multipliers[0], s.multipliers[1]};
     pt.stability = to_string(s.stability);
     pt.tests = {s.monodromy.trace() + 2, f.phi(1, 0)};

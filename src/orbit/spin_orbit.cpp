@@ -13,7 +13,6 @@
 namespace newtop {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 // Newton steps on the shooting condition after TOMS 748, and the step below which they stop.
 constexpr int kNewtonSteps = 8;
 constexpr double kNewtonStop = 1e-14;
@@ -69,7 +68,7 @@ PeriodicSolution periodic_solution_at(const PitchProblem& p, const SpinOrbitReso
   s.resonance = r;
   s.theta0 = theta0;
   s.dtheta0 = dtheta0;
-  const double period = 2 * kPi * r.periods;
+  const double period = 2 * std::numbers::pi * r.periods;
   const double slope = r.half_turns / (2.0 * r.periods);
   Vec2 x(theta0, dtheta0);
   Mat2 phi = Mat2::Identity();
@@ -81,15 +80,16 @@ PeriodicSolution periodic_solution_at(const PitchProblem& p, const SpinOrbitReso
     s.max_deviation = std::max(s.max_deviation, std::abs(x[0] - theta0 - slope * b));
   }
   s.monodromy = phi;
-  s.residual = (x - Vec2(theta0 + r.half_turns * kPi, dtheta0)).norm();
+  s.residual = (x - Vec2(theta0 + r.half_turns * std::numbers::pi, dtheta0)).norm();
   floquet(s);
   // The reversibility points ν = πj of the period: θ there a multiple of π/2 for a symmetric
   // solution (docs/orbit.md §9).
   Vec2 y(theta0, dtheta0);
-  s.symmetry_distance = std::abs(std::remainder(theta0, kPi / 2));
+  s.symmetry_distance = std::abs(std::remainder(theta0, std::numbers::pi / 2));
   for (int j = 1; j < 2 * r.periods; ++j) {
-    y = pitch_advance(p, y, kPi * (j - 1), kPi * j);
-    s.symmetry_distance = std::min(s.symmetry_distance, std::abs(std::remainder(y[0], kPi / 2)));
+    y = pitch_advance(p, y, std::numbers::pi * (j - 1), std::numbers::pi * j);
+    s.symmetry_distance =
+        std::min(s.symmetry_distance, std::abs(std::remainder(y[0], std::numbers::pi / 2)));
   }
   return s;
 }
@@ -101,10 +101,10 @@ std::vector<PeriodicSolution> periodic_solutions(const PitchProblem& p, const Sp
   const double w =
       search.half_window > 0 ? search.half_window : std::max(0.5, 2 * std::sqrt(3 * std::abs(p.k)));
   const double centre = r.half_turns / (2.0 * r.periods);
-  const double half = kPi * r.periods;  // ν = πN, the second reversibility point
+  const double half = std::numbers::pi * r.periods;  // ν = πN, the second reversibility point
   std::vector<PeriodicSolution> found;
-  for (const double theta0 : {0.0, kPi / 2}) {
-    const double target = theta0 + r.half_turns * kPi / 2;
+  for (const double theta0 : {0.0, std::numbers::pi / 2}) {
+    const double target = theta0 + r.half_turns * std::numbers::pi / 2;
     auto F = [&](double s) { return pitch_advance(p, Vec2(theta0, s), 0.0, half)[0] - target; };
     double s_prev = centre - w, f_prev = F(s_prev);
     for (int i = 1; i <= search.samples; ++i) {
@@ -147,7 +147,8 @@ double resonance_strength(double spin_ratio, double eccentricity) {
     const double a_over_r = (1 + e * std::cos(nu)) / (1 - e * e);
     return a_over_r * a_over_r * a_over_r * std::cos(2 * spin_ratio * m - 2 * nu);
   };
-  return boost::math::quadrature::trapezoidal(integrand, 0.0, 2 * kPi, 1e-14) / (2 * kPi);
+  return boost::math::quadrature::trapezoidal(integrand, 0.0, 2 * std::numbers::pi, 1e-14) /
+         (2 * std::numbers::pi);
 }
 
 double averaged_half_width(const PitchProblem& p, double spin_ratio) {
@@ -162,11 +163,11 @@ bool librates(const PitchProblem& p, int orbits, double theta_c, double dtheta, 
   Vec2 x(theta_c, dtheta);
   double unwrapped = 0.0, previous = 0.0;
   for (int j = 0; j < periods; ++j) {
-    x = pitch_advance(p, x, 0.0, 2 * kPi * orbits);
-    const double d = std::remainder(x[0] - theta_c, kPi);
-    unwrapped += std::remainder(d - previous, kPi);
+    x = pitch_advance(p, x, 0.0, 2 * std::numbers::pi * orbits);
+    const double d = std::remainder(x[0] - theta_c, std::numbers::pi);
+    unwrapped += std::remainder(d - previous, std::numbers::pi);
     previous = d;
-    if (std::abs(unwrapped) > kPi) return false;
+    if (std::abs(unwrapped) > std::numbers::pi) return false;
   }
   return true;
 }
@@ -206,14 +207,15 @@ SectionOrbit periapsis_section(const PitchProblem& p, double theta0, double dthe
   o.dtheta0 = dtheta0;
   // The equation is 2π-periodic in ν and π-periodic in θ: each orbit is the map over [0, 2π]
   // from θ reduced to [−π/2, π/2).
-  Vec2 x(theta0 - kPi * std::floor((theta0 + kPi / 2) / kPi), dtheta0);
+  Vec2 x(theta0 - std::numbers::pi * std::floor((theta0 + std::numbers::pi / 2) / std::numbers::pi),
+         dtheta0);
   Vec2 v = Vec2(1.0, 1.0).normalized();
   double log_growth = 0.0;
   o.points.reserve(static_cast<std::size_t>(iterates));
   for (int j = 0; j < iterates; ++j) {
-    const PitchFlow f = pitch_flow(p, x, 0.0, 2 * kPi);
+    const PitchFlow f = pitch_flow(p, x, 0.0, 2 * std::numbers::pi);
     x = f.x;
-    x[0] -= kPi * std::floor((x[0] + kPi / 2) / kPi);
+    x[0] -= std::numbers::pi * std::floor((x[0] + std::numbers::pi / 2) / std::numbers::pi);
     v = f.phi * v;
     const double g = v.norm();
     log_growth += std::log(g);

@@ -10,20 +10,21 @@ namespace newtop {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // Two starts that converge to θ(0) mod π and θ′(0) within this are the same solution.
 constexpr double kSameSolution = 1e-7;
 
 /// θ reduced to [−π/2, π/2) (the equation is π-periodic in θ).
-double reduce(double theta) { return theta - kPi * std::floor((theta + kPi / 2) / kPi); }
+double reduce(double theta) {
+  return theta - std::numbers::pi * std::floor((theta + std::numbers::pi / 2) / std::numbers::pi);
+}
 
 }  // namespace
 
 std::optional<PeriodicSolution> shoot_periodic(const PitchProblem& p, const SpinOrbitResonance& r,
                                                const Vec2& guess,
                                                const ShootingSettings& settings) {
-  const double period = 2 * kPi * r.periods;
-  const Vec2 advance(r.half_turns * kPi, 0.0);
+  const double period = 2 * std::numbers::pi * r.periods;
+  const Vec2 advance(r.half_turns * std::numbers::pi, 0.0);
   // F(x) and the flow (its Φ gives the Jacobian Φ − I).
   auto residual = [&](const Vec2& x, PitchFlow& f) {
     f = pitch_flow(p, x, 0.0, period);
@@ -75,15 +76,16 @@ std::vector<PeriodicSolution> shoot_periodic_solutions(const PitchProblem& p,
   const double centre = r.half_turns / (2.0 * r.periods);
   std::vector<PeriodicSolution> found;
   for (int i = 0; i < grid.theta_samples; ++i) {
-    const double theta = -kPi / 2 + kPi * (i + 0.5) / grid.theta_samples;
+    const double theta = -std::numbers::pi / 2 + std::numbers::pi * (i + 0.5) / grid.theta_samples;
     for (int j = 0; j < grid.rate_samples; ++j) {
       const double rate = centre - w + 2 * w * (j + 0.5) / grid.rate_samples;
       const auto s = shoot_periodic(p, r, Vec2(theta, rate));
       if (!s) continue;
       bool known = false;
       for (const PeriodicSolution& k : found) {
-        known = known || (std::abs(std::remainder(k.theta0 - s->theta0, kPi)) < kSameSolution &&
-                          std::abs(k.dtheta0 - s->dtheta0) < kSameSolution);
+        known = known ||
+                (std::abs(std::remainder(k.theta0 - s->theta0, std::numbers::pi)) < kSameSolution &&
+                 std::abs(k.dtheta0 - s->dtheta0) < kSameSolution);
       }
       if (!known) found.push_back(*s);
     }

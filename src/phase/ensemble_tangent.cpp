@@ -41,14 +41,14 @@ std::size_t tangent_columns(const EnsembleState& x, const std::vector<Tangent>& 
 
 // The stages of TangentSplittingStepper::step and free_body: rotations about the body axes in the
 // order `axes`, with a = t/I and b = k of the model, or with a model per lane a = t.
-std::vector<detail::EnsembleStage> tangent_program(const std::vector<double>& a,
-                                                   const std::vector<double>& b,
-                                                   const std::array<int, 3>& axes, double h,
-                                                   const Body* body) {
-  std::vector<detail::EnsembleStage> program;
+std::vector<newtop::detail::EnsembleStage> tangent_program(const std::vector<double>& a,
+                                                           const std::vector<double>& b,
+                                                           const std::array<int, 3>& axes, double h,
+                                                           const Body* body) {
+  std::vector<newtop::detail::EnsembleStage> program;
   auto rotate = [&](int axis, double t) {
-    const auto op =
-        static_cast<detail::EnsembleOp>(static_cast<int>(detail::EnsembleOp::rotate0) + axis);
+    const auto op = static_cast<newtop::detail::EnsembleOp>(
+        static_cast<int>(newtop::detail::EnsembleOp::rotate0) + axis);
     if (body) {
       program.push_back({op, t / body->inertia()[axis], body->gyrostat()[axis]});
     } else {
@@ -57,7 +57,7 @@ std::vector<detail::EnsembleStage> tangent_program(const std::vector<double>& a,
   };
   const std::size_t s = a.size();
   for (std::size_t i = 0; i <= s; ++i) {
-    if (b[i] != 0.0) program.push_back({detail::EnsembleOp::kick, b[i] * h, 0.0});
+    if (b[i] != 0.0) program.push_back({newtop::detail::EnsembleOp::kick, b[i] * h, 0.0});
     if (i == s) break;
     const double t = a[i] * h, t2 = 0.5 * t;
     rotate(axes[0], t2);
@@ -71,7 +71,7 @@ std::vector<detail::EnsembleStage> tangent_program(const std::vector<double>& a,
 
 // Runs the task on the points `points` of x and V (their tangent vectors' `cols` columns): copied
 // into the workspace (padded with the last point), advanced, copied back.
-void run_points(SimdPath path, detail::EnsembleTangentTask& task,
+void run_points(SimdPath path, newtop::detail::EnsembleTangentTask& task,
                 const std::vector<std::size_t>& points, std::size_t cols, EnsembleState& x,
                 std::vector<Tangent>& V, std::vector<double>& workspace) {
   const std::size_t n = points.size();
@@ -107,14 +107,14 @@ void run_points(SimdPath path, detail::EnsembleTangentTask& task,
   switch (path) {
 #ifdef NEWTOP_ENSEMBLE_X86
     case SimdPath::avx2:
-      detail::ensemble_tangent_run_avx2(task);
+      newtop::detail::ensemble_tangent_run_avx2(task);
       break;
     case SimdPath::avx512:
-      detail::ensemble_tangent_run_avx512(task);
+      newtop::detail::ensemble_tangent_run_avx512(task);
       break;
 #endif
     default:
-      detail::ensemble_tangent_run_portable(task);
+      newtop::detail::ensemble_tangent_run_portable(task);
       break;
   }
 
@@ -140,9 +140,9 @@ void EnsembleTangentStepper::advance(const QuadraticModel& model, EnsembleState&
   const std::size_t n = x.size();
   if (n == 0 || steps <= 0) return;
   const Body& body = model.body;
-  const std::vector<detail::EnsembleStage> program =
+  const std::vector<newtop::detail::EnsembleStage> program =
       tangent_program(a_, b_, split_frame(body, ordering_).axis, h, &body);
-  detail::EnsembleTangentTask task{};
+  newtop::detail::EnsembleTangentTask task{};
   task.stages = program.data();
   task.stage_count = program.size();
   const double mg = body.mass() * model.field.g;
@@ -169,27 +169,27 @@ void EnsembleTangentStepper::advance(const EnsembleModels& models, EnsembleState
   for (const EnsembleModels::Group& g : models.groups_) {
     // The group's rotation order (split_frame's axes, the same for its models); the models'
     // constants per lane in the body frame, padded with the last point's.
-    const std::vector<detail::EnsembleStage> program =
+    const std::vector<newtop::detail::EnsembleStage> program =
         tangent_program(a_, b_, g.frame.axis, h, nullptr);
     const std::size_t n = g.points.size();
     const std::size_t padded = (n + 7) / 8 * 8;
-    constants_.assign(detail::kTangentConstants * padded, 0.0);
+    constants_.assign(newtop::detail::kTangentConstants * padded, 0.0);
     for (std::size_t j = 0; j < padded; ++j) {
       const QuadraticModel& m = models.models_[g.points[std::min(j, n - 1)]];
       const Body& body = m.body;
       const double mg = body.mass() * m.field.g;
       auto set = [&](int c, double v) { constants_[std::size_t(c) * padded + j] = v; };
       for (int w = 0; w < 3; ++w) {
-        set(detail::kTangentInertia + w, body.inertia()[w]);
-        set(detail::kTangentGyrostat + w, body.gyrostat()[w]);
-        set(detail::kTangentGrad0 + w, mg * body.center_of_mass()[w]);
+        set(newtop::detail::kTangentInertia + w, body.inertia()[w]);
+        set(newtop::detail::kTangentGyrostat + w, body.gyrostat()[w]);
+        set(newtop::detail::kTangentGrad0 + w, mg * body.center_of_mass()[w]);
       }
-      set(detail::kTangentLambda, m.field.lambda_);
+      set(newtop::detail::kTangentLambda, m.field.lambda_);
     }
-    detail::EnsembleTangentTask task{};
+    newtop::detail::EnsembleTangentTask task{};
     task.stages = program.data();
     task.stage_count = program.size();
-    for (int c = 0; c < detail::kTangentConstants; ++c) {
+    for (int c = 0; c < newtop::detail::kTangentConstants; ++c) {
       task.lane[c] = constants_.data() + std::size_t(c) * padded;
     }
     task.steps = steps;

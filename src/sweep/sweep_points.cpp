@@ -19,7 +19,7 @@
 namespace newtop::sweep {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kPointNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// The state `stability` analyses: the spin about the axis at Ω, or the scenario's own state
 /// polished to a fixed point. Throws InputError when it is not a fixed point.
@@ -91,7 +91,7 @@ void move_onto_level(const EnergyLevel& level, io::Scenario& sc) {
   }
   const double wi2 = 2.0 * rest / body.inertia()[i];
   if (!(wi2 >= 0.0)) {
-    sc.initial.m.setConstant(kNaN);
+    sc.initial.m.setConstant(kPointNaN);
     return;
   }
   sc.initial.m[i] = body.inertia()[i] * (level.sign * std::sqrt(wi2)) + body.gyrostat()[i];
@@ -197,7 +197,7 @@ PointResult evaluate_point(const SweepFile& s, std::size_t index) {
     if (q == "stability") {
       const Spectrum sp = linear_stability(sc.model, stability_state(sc, o));
       r.values.push_back(sp.linearly_stable ? 1.0 : 0.0);
-      r.values.push_back(sp.lyapunov_stable ? (*sp.lyapunov_stable ? 1.0 : 0.0) : kNaN);
+      r.values.push_back(sp.lyapunov_stable ? (*sp.lyapunov_stable ? 1.0 : 0.0) : kPointNaN);
       r.values.push_back(sp.max_real_part);
     } else if (q == "drift") {
       r.values.insert(r.values.end(), {traj->drift.max_drift.energy, traj->drift.max_drift.area,
