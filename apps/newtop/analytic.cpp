@@ -189,7 +189,7 @@ int run(const AnalyticArgs& a) {
   return failed ? kExitIncomplete : kExitOk;
 }
 
-const RegisterCommand reg{Command{
+const RegisterCommand reg_analytic{Command{
     "analytic",
     "Detect the integrable case (Euler-Poinsot, pendulum, Lagrange, Brun) and compare its "
     "analytic solution with the numerical motion",

@@ -79,7 +79,7 @@ int run(const ChaosArgs& a) {
   return r.outcome.status == Status::finished ? kExitOk : kExitIncomplete;
 }
 
-const RegisterCommand reg{Command{
+const RegisterCommand reg_chaos{Command{
     "chaos",
     "Chaos indicators: Lyapunov exponents, MEGNO and FLI from the integrator's tangent map",
     [](CLI::App& sub) -> std::function<int()> {

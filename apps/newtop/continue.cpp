@@ -231,7 +231,7 @@ int run(const ContinueArgs& a) {
   return report(a, r, p0, p1, file.get());
 }
 
-const RegisterCommand reg{Command{
+const RegisterCommand reg_continue{Command{
     "continue",
     "Continue a family (spin-orbit resonance, Lyapunov orbits, equilibrium, rotation) in one "
     "parameter "

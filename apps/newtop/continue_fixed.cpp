@@ -12,7 +12,7 @@
 namespace newtop::app {
 namespace {
 
-[[noreturn]] void refuse_key(const ContinueArgs& a, const std::string& allowed) {
+[[noreturn]] void refuse_fixed_key(const ContinueArgs& a, const std::string& allowed) {
   throw InputError("--parameter: expected " + allowed + " for --family " + a.family + ", found '" +
                    a.parameter + "'");
 }
@@ -45,9 +45,10 @@ Run run_rest(const ContinueArgs& a, double p0, double p1) {
   try {
     path = quadratic_path(m, a.parameter);
   } catch (const InputError&) {
-    refuse_key(a,
-               "body.inertia[0..2], body.center_of_mass[0..2], body.mass, field.g or field.lambda "
-               "(fixed-point scenario)");
+    refuse_fixed_key(
+        a,
+        "body.inertia[0..2], body.center_of_mass[0..2], body.mass, field.g or field.lambda "
+        "(fixed-point scenario)");
   }
   for (const double p : {p0, p1}) {
     try {
@@ -65,7 +66,7 @@ Run run_rest(const ContinueArgs& a, double p0, double p1) {
 /// The Lyapunov family of the scenario's stable equilibrium at rest, in the energy above it
 /// (docs/continuation.md §4c).
 Run run_periodic(const ContinueArgs& a, double p0, double p1) {
-  if (a.parameter != "energy") refuse_key(a, "energy (above the equilibrium's)");
+  if (a.parameter != "energy") refuse_fixed_key(a, "energy (above the equilibrium's)");
   if (!(p0 > 0) || !(p1 > 0)) {
     throw InputError("--range: expected energies above the equilibrium's, A > 0 and B > 0, found " +
                      a.range);

@@ -77,7 +77,7 @@ int run(const EquilibriaArgs& a) {
   return kExitOk;
 }
 
-const RegisterCommand reg{
+const RegisterCommand reg_equilibria{
     Command{"equilibria", "Every equilibrium at rest (omega = 0), its type and the count rule",
             [](CLI::App& sub) -> std::function<int()> {
               auto a = std::make_shared<EquilibriaArgs>();

@@ -157,7 +157,7 @@ int run(const FieldArgs& a) {
   return kExitOk;
 }
 
-const RegisterCommand reg{Command{
+const RegisterCommand reg_field{Command{
     "field", "Exact and quadratic field of a mass model: V, dV/dgamma, dV/dR, moment, force",
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<FieldArgs>();

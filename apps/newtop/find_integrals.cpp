@@ -90,7 +90,7 @@ int run(const FindArgs& a) {
   return kExitOk;
 }
 
-const RegisterCommand reg{Command{
+const RegisterCommand reg_find_integrals{Command{
     "find-integrals", "Search numerically for first integrals polynomial in (omega, gamma)",
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<FindArgs>();

@@ -45,7 +45,7 @@ int run(const IntegralsArgs& a) {
   return kExitOk;
 }
 
-const RegisterCommand reg{Command{
+const RegisterCommand reg_integrals{Command{
     "integrals", "First integrals at the initial state, and which are conserved for the model",
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<IntegralsArgs>();

@@ -97,7 +97,7 @@ int run(const LibrationArgs& a) {
   }
 }
 
-const RegisterCommand reg{Command{
+const RegisterCommand reg_libration{Command{
     "libration",
     "Planar pitch on an elliptic orbit: spin-orbit resonances, Floquet multipliers, periapsis "
     "section",

@@ -90,7 +90,7 @@ int run(const RotationsArgs& a) {
   return kExitOk;
 }
 
-const RegisterCommand reg{Command{
+const RegisterCommand reg_rotations{Command{
     "rotations", "Families of permanent rotations; the Staude cone of axes sampled to CSV",
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<RotationsArgs>();

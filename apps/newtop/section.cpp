@@ -238,7 +238,7 @@ int run(const SectionArgs& a) {
   return status == Status::finished ? kExitOk : kExitIncomplete;
 }
 
-const RegisterCommand reg{Command{
+const RegisterCommand reg_section{Command{
     "section",
     "Poincare section: the crossings of the trajectory with a surface g(omega, gamma[, normal]) = "
     "0",

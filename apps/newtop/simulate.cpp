@@ -205,7 +205,7 @@ int run(const SimulateArgs& a) {
   }
 }
 
-const RegisterCommand reg{Command{
+const RegisterCommand reg_simulate{Command{
     "simulate", "Integrate a scenario and report the final state and the drift of the integrals",
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<SimulateArgs>();

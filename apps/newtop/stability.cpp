@@ -168,7 +168,7 @@ int run(const StabilityArgs& a) {
   return kExitOk;
 }
 
-const RegisterCommand reg{Command{
+const RegisterCommand reg_stability{Command{
     "stability",
     "Linear and energy-Casimir stability of an equilibrium or permanent rotation; diagrams",
     [](CLI::App& sub) -> std::function<int()> {

@@ -247,7 +247,7 @@ int run(const SweepArgs& a) {
   }
 }
 
-const RegisterCommand reg{Command{
+const RegisterCommand reg_sweep{Command{
     "sweep", "Quantities over a grid of parameters and initial conditions, on every core",
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<SweepArgs>();

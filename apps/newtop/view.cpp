@@ -77,7 +77,7 @@ int run(const ViewArgs& a) {
   return kExitOk;
 }
 
-const RegisterCommand reg{Command{
+const RegisterCommand reg_view{Command{
     "view", "Write a self-contained HTML page that plays a trajectory CSV in 3D",
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<ViewArgs>();
