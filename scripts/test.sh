@@ -40,7 +40,7 @@ sanitize="$build-sanitize"
 # Four folders of tests are not built here: integrable, stability, continuation and orbit check
 # physics (against closed forms, published tables, conservation laws) through analyses that the
 # examples below also run under the sanitizers, subcommand by subcommand; their instrumented build
-# would cost about 4 min of the stage's 20. They run in the GCC build above. The folders that check
+# and runs cost minutes on two cores. They run in the GCC build above. The folders that check
 # memory layouts and untrusted input (integrate's lanes and kernels, phase's ensembles, exact's
 # meshes, io, cli, sweep, model, the fuzz corpora) all run here.
 cmake -S . -B "$sanitize" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" \
