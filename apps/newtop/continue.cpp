@@ -68,11 +68,6 @@ std::optional<int> inertia_index(const std::string& key) {
   return std::nullopt;
 }
 
-[[noreturn]] void refuse_key(const ContinueArgs& a, const std::string& allowed) {
-  throw InputError("--parameter: expected " + allowed + " for --family " + a.family + ", found '" +
-                   a.parameter + "'");
-}
-
 EllipticOrbit pitch_orbit(const io::OrbitScenario& sc) {
   if (const auto* e = std::get_if<EllipticOrbit>(&sc.orbit)) return *e;
   const auto& c = std::get<CircularOrbit>(sc.orbit);
@@ -262,4 +257,9 @@ const RegisterCommand reg_continue{Command{
     }}};
 
 }  // namespace
+
+[[noreturn]] void refuse_key(const ContinueArgs& a, const std::string& allowed) {
+  throw InputError("--parameter: expected " + allowed + " for --family " + a.family + ", found '" +
+                   a.parameter + "'");
+}
 }  // namespace newtop::app

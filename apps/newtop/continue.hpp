@@ -39,6 +39,9 @@ struct Run {
 Run run_rest(const ContinueArgs& a, double p0, double p1);
 Run run_periodic(const ContinueArgs& a, double p0, double p1);
 
+/// Throws the InputError refusing --parameter for --family: `allowed` names what it accepts.
+[[noreturn]] void refuse_key(const ContinueArgs& a, const std::string& allowed);
+
 /// Writes the CSV into `file` (when given) and commits it, then prints the JSON or the summary.
 int report(const ContinueArgs& a, const Run& r, double p0, double p1, io::AtomicFile* file);
 

@@ -12,11 +12,6 @@
 namespace newtop::app {
 namespace {
 
-[[noreturn]] void refuse_fixed_key(const ContinueArgs& a, const std::string& allowed) {
-  throw InputError("--parameter: expected " + allowed + " for --family " + a.family + ", found '" +
-                   a.parameter + "'");
-}
-
 /// The scenario's model (quadratic field) and its initial state, an equilibrium at rest.
 const QuadraticModel& rest_model(const io::Scenario& sc, const ContinueArgs& a) {
   if (sc.model.kind() != FieldKind::quadratic) {
@@ -45,10 +40,9 @@ Run run_rest(const ContinueArgs& a, double p0, double p1) {
   try {
     path = quadratic_path(m, a.parameter);
   } catch (const InputError&) {
-    refuse_fixed_key(
-        a,
-        "body.inertia[0..2], body.center_of_mass[0..2], body.mass, field.g or field.lambda "
-        "(fixed-point scenario)");
+    refuse_key(a,
+               "body.inertia[0..2], body.center_of_mass[0..2], body.mass, field.g or field.lambda "
+               "(fixed-point scenario)");
   }
   for (const double p : {p0, p1}) {
     try {
@@ -66,7 +60,7 @@ Run run_rest(const ContinueArgs& a, double p0, double p1) {
 /// The Lyapunov family of the scenario's stable equilibrium at rest, in the energy above it
 /// (docs/continuation.md §4c).
 Run run_periodic(const ContinueArgs& a, double p0, double p1) {
-  if (a.parameter != "energy") refuse_fixed_key(a, "energy (above the equilibrium's)");
+  if (a.parameter != "energy") refuse_key(a, "energy (above the equilibrium's)");
   if (!(p0 > 0) || !(p1 > 0)) {
     throw InputError("--range: expected energies above the equilibrium's, A > 0 and B > 0, found " +
                      a.range);
