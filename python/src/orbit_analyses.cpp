@@ -199,46 +199,53 @@ void bind_stability(py::module_& m) {
         py::arg("equilibrium") = py::none(), py::arg("state") = py::none());
 }
 
-using P = DebraDelpPoint;
-using Axis = std::tuple<double, double, int>;
+using DdPoint = DebraDelpPoint;  // the DeBra–Delp diagram's point and axis (start, end, count)
+using DdAxis = std::tuple<double, double, int>;
 
 void bind_debra_delp(py::module_& m) {
   using D = DebraDelpDiagram;
   py::class_<D>(m, "DebraDelpDiagram",
                 "The DeBra-Delp diagram over (k_R, k_Y) (docs/orbit.md §8), k_R outer: "
                 "newtop.debra_delp(), as `newtop stability --diagram debra-delp --json`.")
-      .def_property_readonly(
-          "k_R", [](const D& d) { return column<P>(d.points, [](const P& p) { return p.k_R; }); })
-      .def_property_readonly(
-          "k_Y", [](const D& d) { return column<P>(d.points, [](const P& p) { return p.k_Y; }); })
+      .def_property_readonly("k_R",
+                             [](const D& d) {
+                               return column<DdPoint>(d.points,
+                                                      [](const DdPoint& p) { return p.k_R; });
+                             })
+      .def_property_readonly("k_Y",
+                             [](const D& d) {
+                               return column<DdPoint>(d.points,
+                                                      [](const DdPoint& p) { return p.k_Y; });
+                             })
       .def_property_readonly(
           "region",
           [](const D& d) {
             std::vector<std::string> v;
-            for (const P& p : d.points) v.emplace_back(to_string(p.computed));
+            for (const DdPoint& p : d.points) v.emplace_back(to_string(p.computed));
             return v;
           },
           "the model's linearisation: 'lagrange', 'debra_delp' or 'unstable'")
       .def_property_readonly("closed_form",
                              [](const D& d) {
                                std::vector<std::string> v;
-                               for (const P& p : d.points) v.emplace_back(to_string(p.closed_form));
+                               for (const DdPoint& p : d.points)
+                                 v.emplace_back(to_string(p.closed_form));
                                return v;
                              })
       .def_property_readonly("boundary",
                              [](const D& d) {
                                std::vector<bool> v;
-                               for (const P& p : d.points) v.push_back(p.boundary);
+                               for (const DdPoint& p : d.points) v.push_back(p.boundary);
                                return py::array(py::cast(v));
                              })
       .def_property_readonly("max_real_part",
                              [](const D& d) {
-                               return column<P>(d.points,
-                                                [](const P& p) { return p.max_real_part; });
+                               return column<DdPoint>(
+                                   d.points, [](const DdPoint& p) { return p.max_real_part; });
                              })
       .def_property_readonly("characteristic",
                              [](const D& d) {
-                               return rows<P>(d.points, 7, [](const P& p, double* q) {
+                               return rows<DdPoint>(d.points, 7, [](const DdPoint& p, double* q) {
                                  Eigen::Matrix<double, 7, 1>::Map(q) = p.characteristic;
                                });
                              })
@@ -254,12 +261,12 @@ void bind_debra_delp(py::module_& m) {
       .def("__len__", [](const D& d) { return d.points.size(); });
   m.def(
       "debra_delp",
-      [](const Axis& k_R, const Axis& k_Y) {
+      [](const DdAxis& k_R, const DdAxis& k_Y) {
         const py::gil_scoped_release unlocked;
         return debra_delp_diagram({std::get<0>(k_R), std::get<1>(k_R), std::get<2>(k_R)},
                                   {std::get<0>(k_Y), std::get<1>(k_Y), std::get<2>(k_Y)});
       },
-      py::arg("k_R") = Axis{-0.99, 0.99, 67}, py::arg("k_Y") = Axis{-0.99, 0.99, 67},
+      py::arg("k_R") = DdAxis{-0.99, 0.99, 67}, py::arg("k_Y") = DdAxis{-0.99, 0.99, 67},
       "The DeBra-Delp diagram on a grid (LO, HI, N) of each ratio, ends included (the command "
       "line's --scan k_R=LO:HI:N,k_Y=LO:HI:M; default -0.99:0.99:67 each).");
 }

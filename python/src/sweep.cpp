@@ -69,8 +69,8 @@ void check_threads(int threads) {
   }
 }
 
-py::dict run(const std::string& text, const std::string& base_source, const std::string& base_text,
-             int threads) {
+py::dict run_sweep_text(const std::string& text, const std::string& base_source,
+                        const std::string& base_text, int threads) {
   check_threads(threads);
   return run_file(sweep::make_sweep(text, base_source, base_text), threads);
 }
@@ -87,7 +87,7 @@ void bind_sweep(py::module_& m) {
   m.def("_scenario_text", &io::scenario_text, py::arg("model"), py::arg("state"),
         "[body], [mass_model], [field] and [initial] of a model and state built in code, as "
         "scenario TOML (io::scenario_text): what a sweep of a Model runs on.");
-  m.def("_sweep", &run, py::arg("text"), py::arg("base_source"), py::arg("base_text"),
+  m.def("_sweep", &run_sweep_text, py::arg("text"), py::arg("base_source"), py::arg("base_text"),
         py::arg("threads") = 0,
         "A sweep's text (as a sweep file's) over the base scenario's text: points, failed, "
         "off_level, threads, quantities and results (one numpy array per axis and column, NaN "
