@@ -30,7 +30,7 @@ cmake -S tests/consumer -B "$build/consumer" -G Ninja -DCMAKE_PREFIX_PATH="$PWD/
 cmake --build "$build/consumer"
 "$build/consumer/newtop_consumer"
 
-echo "== sanitizers: clang, AddressSanitizer + UndefinedBehaviorSanitizer, every test and example"
+echo "== sanitizers: clang, AddressSanitizer + UndefinedBehaviorSanitizer, the tests and examples below"
 # -O1 keeps the instrumented build short on two cores (about 18 min of CPU for the whole tree;
 # clang at -O3 with the sanitizers is several times slower) and the tests fast enough; benchmarks are not built (they are not
 # tests). Any report aborts its test (-fno-sanitize-recover=all, halt_on_error). Warnings are
