@@ -28,11 +28,7 @@ test::CliResult run(const std::string& args) {
   return test::run_newtop(args, test::Stderr::separate);
 }
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("newtop_att_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
-}
+fs::path scratch(const std::string& name) { return newtop::test::scratch_path("newtop_att", name); }
 
 fs::path scenario(const std::string& attitude, const std::string& integrate) {
   const fs::path p = scratch("attitude.toml");

@@ -80,8 +80,7 @@ TEST(ChaosCli, AdaptiveMethod) {
 }
 
 TEST(ChaosCli, HistoryCsv) {
-  const fs::path csv =
-      fs::temp_directory_path() / ("newtop_chaos_" + std::to_string(::getpid()) + ".csv");
+  const fs::path csv = newtop::test::scratch_path("newtop_chaos", "history.csv");
   const CliResult r = run("chaos " + brun() + " --t-end 5 --spectrum --out " + csv.string());
   ASSERT_EQ(r.code, 0) << r.err;
   std::ifstream in(csv);
@@ -101,8 +100,7 @@ TEST(ChaosCli, HistoryCsv) {
 }
 
 TEST(ChaosCli, BadInputIsOneLineBeforeWork) {
-  const fs::path csv =
-      fs::temp_directory_path() / ("newtop_chaos_never_" + std::to_string(::getpid()) + ".csv");
+  const fs::path csv = newtop::test::scratch_path("newtop_chaos", "never.csv");
   for (const std::string args : {"--tol -1", "--method dopri5 --step 0.1", "--step -1",
                                  "--step 0.1 --tol 1e-9", "--t-end 0", "--method nope"}) {
     const CliResult r = run("chaos " + brun() + " " + args + " --out " + csv.string());

@@ -20,11 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch_dir() {
-  const fs::path d = fs::temp_directory_path() / ("newtop_mesh_cli_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
+fs::path scratch_dir() { return newtop::test::scratch_dir("newtop_mesh_cli"); }
 
 /// A scenario whose [mass_model] reads `file` (point masses when `points`), in the exact field.
 fs::path scenario_for(const std::string& file, bool points, const std::string& name) {

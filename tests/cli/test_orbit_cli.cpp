@@ -24,10 +24,7 @@ CliResult run(const std::string& args) {
 std::string example(const char* name) { return newtop::test::example_path(name); }
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("newtop_orbit_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
+  return newtop::test::scratch_path("newtop_orbit_cli", name);
 }
 
 void expect_one_line_error(const CliResult& r, const char* part) {

@@ -27,10 +27,7 @@ std::string leo() { return newtop::test::example_path("orbit_leo_lagrange.toml")
 std::string pitch() { return newtop::test::example_path("orbit_elliptic_pitch.toml"); }
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("newtop_orbit_section_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
+  return newtop::test::scratch_path("newtop_orbit_section", name);
 }
 
 TEST(OrbitSectionCli, CircularJsonContract) {

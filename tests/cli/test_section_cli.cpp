@@ -25,9 +25,7 @@ CliResult run(const std::string& args) {
 std::string brun() { return newtop::test::example_path("brun.toml"); }
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("newtop_section_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
+  return newtop::test::scratch_path("newtop_section", name);
 }
 
 TEST(SectionCli, JsonContract) {

@@ -22,8 +22,7 @@ Vec3 vec(const io::Json& v) { return {v[0].get<double>(), v[1].get<double>(), v[
 
 /// Point masses whose principal axes are turned away from the file's frame.
 fs::path tilted_scenario() {
-  const fs::path p =
-      fs::temp_directory_path() / ("newtop_field_frames_" + std::to_string(::getpid()) + ".toml");
+  const fs::path p = newtop::test::scratch_path("newtop_field_frames", "tilted.toml");
   std::ofstream(p) << "[mass_model]\nkind = \"points\"\n"
                       "points = [[1.0, 1.0, 0.5, 0.0], [2.0, -0.5, 0.3, 0.2], [1.5, 0.1, -0.7, "
                       "0.4], [0.5, 0.2, 0.1, -0.9]]\n"

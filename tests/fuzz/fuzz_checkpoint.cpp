@@ -75,6 +75,7 @@ const Fixture& fixture() {
     if (const char* seeds = std::getenv("NEWTOP_FUZZ_CHECKPOINT_SEEDS")) write_seeds(x, seeds);
     return x;
   }();
+  static const fuzz::FolderRemovedAtExit removed{f.dir};
   return f;
 }
 

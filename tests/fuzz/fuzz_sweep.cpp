@@ -48,9 +48,10 @@ void check_file(const sweep::SweepFile& s) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const fuzz::TempFile file(fuzz::bytes(data, size), ".toml", "sweep");
-  static const bool bases = [&] {
-    fuzz::write_sweep_bases(std::filesystem::path(file.path()).parent_path());
-    return true;
+  static const fuzz::FolderRemovedAtExit bases = [&] {
+    const std::filesystem::path dir = std::filesystem::path(file.path()).parent_path();
+    fuzz::write_sweep_bases(dir);
+    return fuzz::FolderRemovedAtExit{dir};
   }();
   (void)bases;
   fuzz::expect_result_or_input_error([&] {

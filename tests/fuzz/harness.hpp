@@ -31,8 +31,18 @@ void expect_result_or_input_error(F&& f) {
   }
 }
 
+/// Removes a folder, with everything in it, when destroyed (a static one: when the process exits).
+struct FolderRemovedAtExit {
+  std::filesystem::path dir;
+  ~FolderRemovedAtExit() {
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+  }
+};
+
 /// A file holding the input under a name with the given extension (readers choose the format by
-/// it), unique per process so that parallel fuzzing jobs do not collide; removed when destroyed.
+/// it), unique per process so that parallel fuzzing jobs do not collide; removed when destroyed
+/// (its folder too when empty).
 class TempFile {
  public:
   TempFile(std::string_view contents, std::string_view extension, std::string_view stem = "input")
@@ -46,6 +56,7 @@ class TempFile {
   ~TempFile() {
     std::error_code ec;
     std::filesystem::remove(path_, ec);
+    std::filesystem::remove(dir_, ec);  // the folder too once no other TempFile holds a file in it
   }
   TempFile(const TempFile&) = delete;
   TempFile& operator=(const TempFile&) = delete;

@@ -12,6 +12,7 @@
 
 #include "mesh_cases.hpp"
 #include "newtop/io/mesh.hpp"
+#include "support/cli.hpp"
 
 namespace newtop {
 namespace test_mesh_errors {
@@ -19,12 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch_dir() {
-  const fs::path d =
-      fs::temp_directory_path() / ("newtop_mesh_errors_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
+fs::path scratch_dir() { return newtop::test::scratch_dir("newtop_mesh_errors"); }
 
 /// The message of the InputError that f() throws ("" if none).
 template <class F>

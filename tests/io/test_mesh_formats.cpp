@@ -13,6 +13,7 @@
 #include "mesh_writers.hpp"
 #include "newtop/exact/mass_models.hpp"
 #include "newtop/io/mesh.hpp"
+#include "support/cli.hpp"
 
 namespace newtop {
 namespace test_mesh_formats {
@@ -26,7 +27,7 @@ constexpr double kSumTol = 256 * std::numeric_limits<double>::epsilon();
 const std::string kData = std::string(NEWTOP_DATA_DIR) + "/polyhedra/";
 
 fs::path scratch(const std::string& name) {
-  return fs::temp_directory_path() / ("newtop_mesh_" + std::to_string(::getpid())) / name;
+  return newtop::test::scratch_path("newtop_mesh", name);
 }
 
 /// Same vertices (bit for bit) and same faces, in the same order.

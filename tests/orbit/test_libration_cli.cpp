@@ -40,9 +40,7 @@ TEST(LibrationCli, PitchStateFollowsTheFullModel) {
 }
 
 TEST(LibrationCli, JsonAndCsvAgreeWithTheLibrary) {
-  const std::string csv = (std::filesystem::temp_directory_path() /
-                           ("libration_" + std::to_string(::getpid()) + ".csv"))
-                              .string();
+  const std::string csv = test::scratch_path("newtop_libration", "libration.csv").string();
   const auto r = test::run_newtop("libration " + test::example_path("orbit_spin_orbit.toml") +
                                       " --resonances 1:1,3:2 --spin 3.4:3.6:2 --iterates 30 --json"
                                       " --out " +
@@ -109,12 +107,11 @@ TEST(LibrationCli, AsymmetricSolutionsAreAddedBesideTheSymmetricOnes) {
 // A circular Kepler orbit is the ellipse e = 0 (ν counted from the start): the same resonances,
 // solutions and section, number for number, as the scenario written with kind = "elliptic".
 TEST(LibrationCli, CircularOrbitIsTheEllipseOfEccentricityZero) {
-  const auto dir = std::filesystem::temp_directory_path();
-  const std::string tag = std::to_string(::getpid());
+  const auto dir = test::scratch_dir("newtop_libration");
   const std::string body = "[body]\ninertia = [0.314, 0.474, 0.542]\n";
   const std::string initial = "[initial]\neuler_321 = [0.3, 0.0, 0.0]\n";
-  const std::string circular = (dir / ("circular_" + tag + ".toml")).string();
-  const std::string elliptic = (dir / ("elliptic_" + tag + ".toml")).string();
+  const std::string circular = (dir / "circular.toml").string();
+  const std::string elliptic = (dir / "elliptic.toml").string();
   std::ofstream(circular) << body << "[orbit]\nkind = \"circular\"\nrate = 1.0\n" << initial;
   std::ofstream(elliptic) << body
                           << "[orbit]\nkind = \"elliptic\"\nmu = 1.0\nsemi_major_axis = 1.0\n"

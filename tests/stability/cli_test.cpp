@@ -33,8 +33,7 @@ CliResult newtop(const std::string& args) { return test::run_newtop(args); }
 std::string example(const std::string& name) { return example_path(name); }
 
 fs::path temp_file(const std::string& name) {
-  return fs::temp_directory_path() /
-         ("newtop_stability_" + std::to_string(::getpid()) + "_" + name);
+  return newtop::test::scratch_path("newtop_stability", name);
 }
 
 std::vector<std::string> lines(const fs::path& p) {

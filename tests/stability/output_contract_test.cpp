@@ -28,7 +28,7 @@ using test::example_path;
 CliResult newtop(const std::string& args) { return test::run_newtop(args); }
 
 fs::path temp_file(const std::string& name) {
-  return fs::temp_directory_path() / ("newtop_contract_" + std::to_string(::getpid()) + "_" + name);
+  return newtop::test::scratch_path("newtop_contract", name);
 }
 
 std::vector<std::string> split(const std::string& line) {

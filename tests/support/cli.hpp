@@ -6,8 +6,11 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -45,13 +48,46 @@ inline CliResult run_newtop(const std::string& args, Stderr stderr_mode = Stderr
   return r;
 }
 
-/// `name` in a scratch folder of this test process's own (`folder_PID` in the temporary
-/// directory, created on first use).
-inline std::filesystem::path scratch_path(const std::string& folder, const std::string& name) {
+namespace detail {
+/// The scratch folders this process made: removed, with everything in them, when it exits (kept
+/// when the environment sets NEWTOP_KEEP_SCRATCH, to look at after a failure).
+class ScratchFolders {
+ public:
+  void add(const std::filesystem::path& dir) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    dirs_.insert(dir);
+  }
+  ~ScratchFolders() {
+    if (std::getenv("NEWTOP_KEEP_SCRATCH") != nullptr) return;
+    for (const auto& dir : dirs_) {
+      std::error_code ec;
+      std::filesystem::remove_all(dir, ec);
+    }
+  }
+
+ private:
+  std::mutex mutex_;
+  std::set<std::filesystem::path> dirs_;
+};
+inline ScratchFolders& scratch_folders() {
+  static ScratchFolders folders;
+  return folders;
+}
+}  // namespace detail
+
+/// A scratch folder of this test process's own: `folder_PID` in the temporary directory, created
+/// on first use, removed when the process exits (detail::ScratchFolders).
+inline std::filesystem::path scratch_dir(const std::string& folder) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / (folder + "_" + std::to_string(::getpid()));
+  detail::scratch_folders().add(dir);
   std::filesystem::create_directories(dir);
-  return dir / name;
+  return dir;
+}
+
+/// `name` in the scratch folder `folder` of this test process (scratch_dir).
+inline std::filesystem::path scratch_path(const std::string& folder, const std::string& name) {
+  return scratch_dir(folder) / name;
 }
 
 /// Writes `text` to `path` and returns the path.
