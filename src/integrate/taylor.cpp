@@ -105,6 +105,11 @@ double taylor_step(const TaylorSeries& s, double abs_tol, double rel_tol) {
       s.order, [&](int n) { return coefficient_norm(s, n); }, abs_tol, rel_tol);
 }
 
+double taylor_step_from_norms(const double* norms, int order, double abs_tol, double rel_tol) {
+  return taylor_lanes::step_from_norms(
+      order, [&](int n) { return norms[n]; }, abs_tol, rel_tol);
+}
+
 double taylor_step_log2(double x) { return taylor_math::step_log2(x); }
 double taylor_step_exp2(double y) { return taylor_math::step_exp2(y); }
 

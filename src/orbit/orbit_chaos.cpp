@@ -180,7 +180,7 @@ IntegrateOptions tangent_options(std::int64_t max_steps, double a, double b) {
 }
 
 void check_pair(const MethodSettings& method) {
-  if (!is_orbit_adaptive_method(method.name)) {
+  if (!is_orbit_adaptive_method(method.name) || method.name == "taylor") {
     throw InputError(
         "method: chaos on an orbit integrates the variational equations with an embedded pair: "
         "expected rkf78, dopri5 or dop853 (with --tol), found '" +

@@ -11,6 +11,7 @@
 #include "newtop/integrate/runge_kutta.hpp"
 #include "newtop/integrate/sampled.hpp"
 #include "newtop/orbit/orbit_integrate.hpp"
+#include "newtop/orbit/orbit_taylor.hpp"
 
 namespace newtop {
 
@@ -59,7 +60,7 @@ using OrbitRkf78 = EmbeddedRkOn<odeint::runge_kutta_fehlberg78<OrbitOdeState>, 8
 using OrbitDopri5 = EmbeddedRkOn<odeint::runge_kutta_dopri5<OrbitOdeState>, 5>;
 using OrbitDop853 = Dop853On<OrbitOdeState>;
 
-constexpr std::array<std::string_view, 3> kAdaptive{"rkf78", "dopri5", "dop853"};
+constexpr std::array<std::string_view, 4> kAdaptive{"rkf78", "dopri5", "dop853", "taylor"};
 
 /// Calls fn(stepper) with a stepper of the named method (settings validated).
 template <class Fn>
@@ -75,6 +76,10 @@ decltype(auto) with_orbit_stepper(const MethodSettings& settings, Fn&& fn) {
   }
   if (settings.name == "dop853") {
     OrbitDop853 s(settings.abs_tol, settings.rel_tol);
+    return fn(s);
+  }
+  if (settings.name == "taylor") {
+    OrbitTaylorStepper s(settings.abs_tol, settings.rel_tol);
     return fn(s);
   }
   const OrbitSplittingStepper s(composition_table(settings.name));
@@ -129,10 +134,15 @@ OrbitOutcome run_adaptive(const M& model, const OrbitState& x, double a, double 
   return integrate(s, model, x, a, b, o, observer);
 }
 
-/// One step of the named pair's propagated formula, without error control.
+/// One step of the named method's propagated formula, without error control (Taylor's: the
+/// series through x at the order of its tolerances).
 template <class M>
-OrbitState one_step(std::string_view name, const M& model, const OrbitState& x, double t,
+OrbitState one_step(const MethodSettings& method, const M& model, const OrbitState& x, double t,
                     double h) {
+  const std::string& name = method.name;
+  if (name == "taylor") {
+    return OrbitTaylorStepper(method.abs_tol, method.rel_tol).formula_step(model, x, t, h);
+  }
   if (name == "dop853") {
     // The tolerances play no part in the formula.
     return OrbitDop853(1.0, 1.0).formula_step(model, x, t, h);
@@ -167,7 +177,7 @@ void validate_orbit_method(const MethodSettings& settings) {
   }
   if (!is_orbit_adaptive_method(settings.name)) {
     throw InputError("method: expected one of " + names +
-                     "rkf78, dopri5, dop853 on an orbit, found '" + settings.name + "'");
+                     "rkf78, dopri5, dop853, taylor on an orbit, found '" + settings.name + "'");
   }
   if (!(settings.abs_tol > 0) || !(settings.rel_tol > 0)) {
     throw InputError("tol: method " + settings.name + " needs tolerances > 0, found " +
@@ -176,21 +186,21 @@ void validate_orbit_method(const MethodSettings& settings) {
 }
 
 OrbitState rkf78_step(const CircularOrbitModel& model, const OrbitState& x, double t, double h) {
-  return one_step("rkf78", model, x, t, h);
+  return one_step(MethodSettings("rkf78"), model, x, t, h);
 }
 
 OrbitState rkf78_step(const EllipticOrbitModel& model, const OrbitState& x, double nu, double h) {
-  return one_step("rkf78", model, x, nu, h);
+  return one_step(MethodSettings("rkf78"), model, x, nu, h);
 }
 
-OrbitState adaptive_formula_step(std::string_view name, const CircularOrbitModel& model,
+OrbitState adaptive_formula_step(const MethodSettings& method, const CircularOrbitModel& model,
                                  const OrbitState& x, double t, double h) {
-  return one_step(name, model, x, t, h);
+  return one_step(method, model, x, t, h);
 }
 
-OrbitState adaptive_formula_step(std::string_view name, const EllipticOrbitModel& model,
+OrbitState adaptive_formula_step(const MethodSettings& method, const EllipticOrbitModel& model,
                                  const OrbitState& x, double nu, double h) {
-  return one_step(name, model, x, nu, h);
+  return one_step(method, model, x, nu, h);
 }
 
 OrbitOutcome integrate_adaptive(const CircularOrbitModel& model, OrbitState x, double t0, double t1,

@@ -96,7 +96,7 @@ phase::SectionRun orbit_section(const MethodSettings& method, const CircularOrbi
   auto jacobi = [&](const OrbitState& x) { return jacobi_integral(model, x); };
   if (is_orbit_adaptive_method(method.name)) {
     auto step = [&](double t, const OrbitState& x, double tau) {
-      return adaptive_formula_step(method.name, model, x, t, tau);
+      return adaptive_formula_step(method, model, x, t, tau);
     };
     return section_with(method, model, step, jacobi, g, settings, orbit, x0, t0, t1, max_steps, out,
                         drift, on_step);
@@ -121,7 +121,7 @@ phase::SectionRun orbit_section(const MethodSettings& method, const EllipticOrbi
                                 const std::function<void(double)>& on_step) {
   if (is_orbit_adaptive_method(method.name)) {
     auto step = [&](double nu, const OrbitState& x, double tau) {
-      return adaptive_formula_step(method.name, model, x, nu, tau);
+      return adaptive_formula_step(method, model, x, nu, tau);
     };
     return section_with(method, model, step, nullptr, g, settings, orbit, x0, nu0, nu1, max_steps,
                         out, drift, on_step);

@@ -149,7 +149,8 @@ TEST(OptionsOnEveryModel, EachOptionWorksOrIsRefusedInOneLine) {
 }
 
 // The options that were refused on orbits and now work: chaos (every embedded pair, the spectrum)
-// and dop853 on simulate; taylor stays refused in one line naming the method.
+// and dop853 and taylor on simulate; chaos with taylor (no variational recurrences on an orbit)
+// is refused in one line naming the method.
 TEST(OptionsOnEveryModel, ChaosAndDop853RunOnOrbits) {
   for (const Model& m : kModels) {
     if (std::string(m.name) == "fixed point") continue;
@@ -166,8 +167,12 @@ TEST(OptionsOnEveryModel, ChaosAndDop853RunOnOrbits) {
       EXPECT_TRUE(std::isfinite(j["megno"].get<double>()));
     }
     EXPECT_EQ(newtop::test::run_newtop("simulate " + ex + " --method dop853 --tol 1e-9").code, 0);
-    expect_works_or_refused("simulate " + ex + " --method taylor --tol 1e-9");
-    EXPECT_EQ(newtop::test::run_newtop("simulate " + ex + " --method taylor --tol 1e-9").code, 2);
+    const CliResult t = newtop::test::run_newtop(
+        "simulate " + ex + " --method taylor --tol 1e-9 --json", newtop::test::Stderr::separate);
+    ASSERT_EQ(t.code, 0) << t.err;
+    EXPECT_EQ(nlohmann::json::parse(t.out)["method"], "taylor");
+    expect_works_or_refused("chaos " + ex + " --method taylor --tol 1e-9");
+    EXPECT_EQ(newtop::test::run_newtop("chaos " + ex + " --method taylor --tol 1e-9").code, 2);
     // A splitting has no tangent map on an orbit: refused in one line.
     expect_works_or_refused("chaos " + ex);
     EXPECT_EQ(newtop::test::run_newtop("chaos " + ex).code, 2);

@@ -183,10 +183,10 @@ def test_bad_states_methods_and_times_are_refused(tmp_path):
         newtop.OrbitState([0, 0, 0], [0, 0.6, 0.8], [0, 1, 0])
     x0 = newtop.OrbitState.from_lvlh(model, roll_pitch_yaw=[0, 0.1, 0])
     with pytest.raises(newtop.InputError) as e:
-        newtop.integrate(model, x0, 100.0, method="taylor", tol=1e-10)
+        newtop.integrate(model, x0, 100.0, method="rk4", step=1.0)
     path = tmp_path / "s.toml"
     path.write_text(scenario_text('kind = "circular"\nmu = 3.986004418e14\nradius = 7.078137e6'))
-    p = program("simulate", str(path), "--method", "taylor", "--tol", "1e-10", ok=False)
+    p = program("simulate", str(path), "--method", "rk4", "--step", "1", ok=False)
     assert p.returncode == 2 and str(e.value) in p.stderr, (str(e.value), p.stderr)
     with pytest.raises(newtop.InputError, match="t_end"):
         newtop.integrate(model, x0, -1.0, step=1.0)
@@ -292,3 +292,19 @@ def test_analyses_of_the_fixed_point_model_only_say_so_on_an_orbit():
     for f in (newtop.analytic, newtop.rotations, newtop.find_integrals):
         with pytest.raises(TypeError, match="has no orbit form"):
             f(sc)
+
+
+def test_taylor_runs_on_an_orbit_and_agrees_with_rkf78():
+    # Taylor's method on the orbit (docs/orbit.md §5) against Fehlberg 7(8), both near round-off:
+    # the two final states agree to the runs' errors (1e-10 of the O(1) numbers after 3000 s).
+    body = newtop.Body.from_principal([1200.0, 1500.0, 900.0])
+    model = newtop.OrbitModel.circular(body, mu=3.986004418e14, radius=7.078137e6)
+    x0 = newtop.OrbitState.from_lvlh(model, roll_pitch_yaw=[0.2, 0.1, -0.3])
+    a = newtop.integrate(model, x0, 3000.0, method="taylor", tol=1e-13)
+    b = newtop.integrate(model, x0, 3000.0, method="rkf78", tol=1e-13)
+    assert a["outcome"] == "finished" and a["method"] == "taylor" and a["tol"] == 1e-13
+    assert a["steps"] < b["steps"]
+    for key in ("gamma", "normal"):
+        assert np.max(np.abs(a[key][-1] - b[key][-1])) < 1e-10, key
+    scale = np.max(np.abs(b["m"][-1]))
+    assert np.max(np.abs(a["m"][-1] - b["m"][-1])) < 1e-10 * scale

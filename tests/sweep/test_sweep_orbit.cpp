@@ -179,6 +179,33 @@ TEST(SweepOrbit, FinalStateAndDriftOnACircularOrbit) {
   }
 }
 
+// The same sweep with Taylor's method (docs/orbit.md §5): at rest in LVLH the closed form again,
+// and a tilted start where Fehlberg 7(8) at 1e-13 ends (both runs' errors ~1e-11 relative over
+// a few hundred steps: 1e-9 of the moments' scale).
+TEST(SweepOrbit, FinalStateWithTaylorOnACircularOrbit) {
+  auto sweep = [&](const char* method) {
+    return newtop::sweep::run_sweep(
+        load(std::string(method) + ".toml",
+             "scenario = \"" + example("satellite_700km.toml") +
+                 "\"\nquantities = [\"final_state\"]\n[integrate]\nt_end = 6000.0\nmethod = \"" +
+                 method + "\"\ntol = 1e-13\n[[axes]]\nkey = \"initial.roll_pitch_yaw[1]\"\n"
+                          "values = [0.0, 0.1]\n"),
+        {});
+  };
+  const SweepFile s = load("axes.toml", "scenario = \"" + example("satellite_700km.toml") +
+                                            "\"\nquantities = [\"final_state\"]\n[[axes]]\n"
+                                            "key = \"initial.roll_pitch_yaw[1]\"\n"
+                                            "values = [0.0, 0.1]\n");
+  const newtop::sweep::SweepRun taylor = sweep("taylor"), rkf78 = sweep("rkf78");
+  const double w0 = std::sqrt(3.986004418e14 / std::pow(7.078137e6, 3));
+  ASSERT_EQ(taylor.results[0].status, "ok");
+  EXPECT_NEAR(column(s, taylor, 0, "q"), -w0, 1e-12 * w0);
+  for (const char* c : {"p", "q", "r", "gamma1", "gamma2", "gamma3", "normal1", "normal3"}) {
+    const double scale = c[0] == 'p' || c[0] == 'q' || c[0] == 'r' ? w0 : 1.0;
+    EXPECT_NEAR(column(s, taylor, 1, c), column(s, rkf78, 1, c), 1e-9 * scale) << c;
+  }
+}
+
 TEST(SweepOrbit, FinalStateOnAnEllipseIsAtTheTimeAsked) {
   const SweepFile s = load("ell.toml", "scenario = \"" + example("orbit_elliptic_pitch.toml") +
                                            "\"\nquantities = [\"final_state\", \"drift\"]\n"

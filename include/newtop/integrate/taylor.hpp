@@ -60,6 +60,9 @@ Quaternion taylor_attitude(const TaylorSeries& s, double h);
 /// exp(−0.7/(p − 1)), with ε = max(abs_tol, rel_tol ‖x^[0]‖∞); +inf when the series is constant.
 /// The powers through taylor_step_log2 and taylor_step_exp2 (below).
 double taylor_step(const TaylorSeries& s, double abs_tol, double rel_tol);
+/// The same rule from the max norms of a series' coefficients, norms[n] for n = 0..order (any
+/// model's series: the orbit's Taylor method uses it).
+double taylor_step_from_norms(const double* norms, int order, double abs_tol, double rel_tol);
 /// The logarithm to base 2 and the power of two of the step rule (src/integrate/taylor_math.hpp):
 /// newtop's own, the same bits in a scalar run and in every lane of an ensemble. Error bounds in
 /// units in the last place of the result, for finite x > 0 and for normal results: the roundings

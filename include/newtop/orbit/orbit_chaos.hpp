@@ -23,7 +23,7 @@ namespace newtop {
 /// What a chaos run on an orbit does (one struct, no positional list).
 struct OrbitChaosSettings {
   /// An embedded pair with its tolerances: rkf78, dopri5 or dop853 (the variational equations
-  /// are integrated by it; a splitting composition is refused).
+  /// are integrated by it; a splitting composition and taylor are refused).
   MethodSettings method;
   double t0 = 0.0;  ///< start time
   double t1 = 0.0;  ///< end time (> t0; in time on an ellipse too)

@@ -138,11 +138,11 @@ OrbitOutcome integrate_adaptive(const EllipticOrbitModel& model, OrbitState x, d
 /// (the right-hand side evaluated afresh at x). Event location lands on the solution with it.
 OrbitState rkf78_step(const CircularOrbitModel& model, const OrbitState& x, double t, double h);
 OrbitState rkf78_step(const EllipticOrbitModel& model, const OrbitState& x, double nu, double h);
-/// The same for any adaptive method of the orbit ("rkf78", "dopri5", "dop853"): its propagated
-/// formula.
-OrbitState adaptive_formula_step(std::string_view name, const CircularOrbitModel& model,
+/// The same for any adaptive method of the orbit ("rkf78", "dopri5", "dop853", "taylor"): its
+/// propagated formula (Taylor's: the series through x, of the order of the method's tolerances).
+OrbitState adaptive_formula_step(const MethodSettings& method, const CircularOrbitModel& model,
                                  const OrbitState& x, double t, double h);
-OrbitState adaptive_formula_step(std::string_view name, const EllipticOrbitModel& model,
+OrbitState adaptive_formula_step(const MethodSettings& method, const EllipticOrbitModel& model,
                                  const OrbitState& x, double nu, double h);
 
 /// The adaptive method on an orbit (the default there when only a tolerance is given).
