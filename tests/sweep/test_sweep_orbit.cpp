@@ -188,8 +188,9 @@ TEST(SweepOrbit, FinalStateWithTaylorOnACircularOrbit) {
         load(std::string(method) + ".toml",
              "scenario = \"" + example("satellite_700km.toml") +
                  "\"\nquantities = [\"final_state\"]\n[integrate]\nt_end = 6000.0\nmethod = \"" +
-                 method + "\"\ntol = 1e-13\n[[axes]]\nkey = \"initial.roll_pitch_yaw[1]\"\n"
-                          "values = [0.0, 0.1]\n"),
+                 method +
+                 "\"\ntol = 1e-13\n[[axes]]\nkey = \"initial.roll_pitch_yaw[1]\"\n"
+                 "values = [0.0, 0.1]\n"),
         {});
   };
   const SweepFile s = load("axes.toml", "scenario = \"" + example("satellite_700km.toml") +
