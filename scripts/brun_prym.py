@@ -209,14 +209,16 @@ def reduce2(u, w):
 def torus_lattice(L):
     """The time lattice of the real torus (rows of L: a basis of Lambda in R^4)."""
     span = range(-6, 7)
-    real = [L.T @ np.array(n) for n in itertools.product(span, repeat=4)]
-    real = [x[:2] for x in real if np.abs(x[2:]).max() < 1e-7 * np.abs(L).max() and np.abs(x).max() > 0]
-    found = []
-    for n in itertools.product(span, repeat=4):
-        x = L.T @ np.array(n)
-        half_real = np.abs(x[:2]).max() < 1e-9 or any(np.abs(2 * x[:2] - r).max() < 1e-6 for r in real)
-        if half_real and np.abs(x[2:]).max() > 1e-9:
-            found.append(x[2:])
+    X = np.array(list(itertools.product(span, repeat=4)), dtype=float) @ L  # rows: L.T @ n
+    imag = np.abs(X[:, 2:]).max(axis=1)
+    real = X[(imag < 1e-7 * np.abs(L).max()) & (np.abs(X).max(axis=1) > 0)][:, :2]
+    # x is kept when its real part is 0 or half a real vector of the lattice (within 1e-6).
+    half_real = np.abs(X[:, :2]).max(axis=1) < 1e-9
+    chunk = max(1, 2**22 // max(1, len(real)))
+    for k in range(0, len(X), chunk):
+        d = np.abs(2 * X[k : k + chunk, None, :2] - real[None, :, :]).max(axis=2)
+        half_real[k : k + chunk] |= (d < 1e-6).any(axis=1)
+    found = list(X[half_real & (imag > 1e-9)][:, 2:])
     found.sort(key=np.linalg.norm)
     u = found[0]
     w = next(x for x in found if abs(u[0] * x[1] - u[1] * x[0]) > 1e-6 * np.linalg.norm(u) * np.linalg.norm(x))
@@ -257,15 +259,20 @@ def measured_frequencies(level, t_end=1500.0, count=6):
     peaks = [i for i in range(1, len(grid) - 1) if p[i] > p[i - 1] and p[i] >= p[i + 1]]
     peaks = sorted(peaks, key=lambda i: -p[i])[:count]
     out = []
-    for i in peaks:  # golden-section refinement of each peak
+    for i in peaks:  # golden-section refinement of each peak (one new power per iteration)
         lo, hi = grid[i - 1], grid[i + 1]
         r = (np.sqrt(5) - 1) / 2
+        m1, m2 = hi - r * (hi - lo), lo + r * (hi - lo)
+        p1, p2 = power(m1), power(m2)
         for _ in range(60):
-            m1, m2 = hi - r * (hi - lo), lo + r * (hi - lo)
-            if power(m1) > power(m2):
-                hi = m2
+            if p1 > p2:
+                hi, m2, p2 = m2, m1, p1
+                m1 = hi - r * (hi - lo)
+                p1 = power(m1)
             else:
-                lo = m1
+                lo, m1, p1 = m1, m2, p2
+                m2 = lo + r * (hi - lo)
+                p2 = power(m2)
         out.append((0.5 * (lo + hi), p[i]))
     return out
 

@@ -51,10 +51,15 @@ cmake --build "$sanitize" -j "$jobs"
 # is done by Python and Chromium, not by instrumented code; the three longest examples, which
 # take 28–38 s each under the sanitizers and go through the same code as shorter ones here; and
 # the sweep killed at a random moment and resumed (47 s here: three runs of a 300-point sweep,
-# whose code the other sweep and checkpoint tests run here).
+# whose code the other sweep and checkpoint tests run here); and the long-time physics checks
+# (MEGNO's limits, energy bounded over many periods, runs of a million steps, far-field and
+# closed-form agreements: 130 s here), which run for long the code that shorter tests run here.
 slow='^(python\.|viewer\.browser$|example\.sweep\.sweep_megno_level$'
 slow+='|example\.libration\.libration_asymmetric$|example\.sweep\.sweep_synchronous$'
-slow+='|Sweep\.KilledAndResumedEqualsUninterrupted$)'
+slow+='|Sweep\.KilledAndResumedEqualsUninterrupted$|Sweep\.MegnoOfAnIntegrableCase'
+slow+='|Megno\.|Conformance\.EnergyErrorBoundedWithoutDrift|AdaptiveDriver\.LongRunsFinish$'
+slow+='|Eros\.ClosedFormAgrees|FieldEquilibria\.ConvergeToTheQuadraticModels'
+slow+='|Chaos\.SpectrumComesInPairsWithZeroTotal$)'
 ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:strict_string_checks=1 \
   UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir "$sanitize" --output-on-failure -j "$jobs" -E "$slow"
