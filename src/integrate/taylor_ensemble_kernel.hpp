@@ -181,21 +181,13 @@ void expand(const double* consts, const double* x, int order, double* series) {
   }
 }
 
-// Holds a value in a register (an empty asm that the compiler must assume reads and changes it):
-// the compiler then does not fold a value used twice into two loads from memory, which made the
-// tangent's sums wait on the loads. Used with AVX-512's 32 registers only: AVX2's 16 cannot hold
-// the sixteen operands and the eight sums.
-template <class V>
-[[gnu::always_inline]] inline V pinned(V v) {
-#if defined(__x86_64__) && defined(__GNUC__)
-  asm("" : "+v"(v));
-#endif
-  return v;
-}
-
 // The coefficients 0..order of one tangent vector v along the state's series
-// (taylor_tangent_lanes.hpp, expand_tangent_lanes with one column): the state's ω^[n] formed again
-// from its m^[n] as there.
+// (phase/taylor_tangent_lanes.hpp, expand_tangent_lanes with one column): the state's ω^[n] formed
+// again from its m^[n] as there. Each sum is Σ_{j=0..n} (δa^[j] b^[n−j] + a^[n−j] δb^[j]), one
+// chain of fused multiply-adds, j from 0 to n, as there: the same bits. With 32 registers (AVX-512)
+// the three components at once: the twelve coefficients δ^[j] and x^[n−j] loaded once for the 24
+// products of the twelve sums (each coefficient used in four); with fewer, one component after
+// another (its four sums and eight coefficients in registers).
 template <class V, int L, class F>
 void expand_tangent(const double* consts, const double* series, const double* v, int order,
                     double* tangent) {
@@ -215,75 +207,30 @@ void expand_tangent(const double* consts, const double* series, const double* v,
     store(tangent + c * L, m);
     store(tangent + (3 + c) * L, dg[0][c]);
   }
-  // taylor_tangent_lanes.hpp's add(δa, b, a, δb) for the component c (neighbours c1, c2).
-  auto add = [](const V(&da_w)[3], const V(&da_g)[3], const V(&xb_w)[3], const V(&xb_g)[3],
-                const V(&xa_w)[3], const V(&xa_g)[3], const V(&db_w)[3], const V(&db_g)[3], int c1,
-                int c2, Sums<V>& z) {
-    z.p = F::fma(xa_w[c1], db_w[c2], F::fma(da_w[c1], xb_w[c2], z.p));
-    z.rs = F::fma(xa_g[c1], db_g[c2], F::fma(da_g[c1], xb_g[c2], z.rs));
-    z.s = F::fma(xa_g[c1], db_w[c2], F::fma(da_g[c1], xb_w[c2], z.s));
-    z.t = F::fma(xa_g[c2], db_w[c1], F::fma(da_g[c2], xb_w[c1], z.t));
+  // The term j of the component c's four sums (its neighbours c1, c2): the tangent's δ^[j] (dw_j,
+  // dg_j) with the state's x^[n−j] (xw_n, xg_n).
+  auto term = [](const V(&dw_j)[3], const V(&dg_j)[3], const V(&xw_n)[3], const V(&xg_n)[3], int c1,
+                 int c2, Sums<V>& z) {
+    z.p = F::fma(xw_n[c1], dw_j[c2], F::fma(dw_j[c1], xw_n[c2], z.p));
+    z.rs = F::fma(xg_n[c1], dg_j[c2], F::fma(dg_j[c1], xg_n[c2], z.rs));
+    z.s = F::fma(xg_n[c1], dw_j[c2], F::fma(dg_j[c1], xw_n[c2], z.s));
+    z.t = F::fma(xg_n[c2], dw_j[c1], F::fma(dg_j[c2], xw_n[c1], z.t));
   };
-  // One component after another (eight sums in registers, not 24), the terms j and n − j of the
-  // two halves together where the registers allow (AVX-512), each sum over j in
-  // taylor_tangent_lanes.hpp's order: the same bits.
   for (int n = 0; n < order; ++n) {
     const double inv = kInverse[static_cast<std::size_t>(n)];
     double* next = tangent + 6 * (n + 1) * L;
     Sums<V> z[3];
-    auto component = [&](auto c_) {  // c a constant: its neighbours' indices fixed
-      constexpr int c = decltype(c_)::value, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-      Sums<V>& za = z[c];
-      if (n == 0) {
-        add(dw[0], dg[0], xw[0], xg[0], xw[0], xg[0], dw[0], dg[0], c1, c2, za);
-        return;
+    if constexpr (sizeof(V) == 64) {
+      for (int j = 0; j <= n; ++j) {
+        term(dw[j], dg[j], xw[n - j], xg[n - j], 1, 2, z[0]);
+        term(dw[j], dg[j], xw[n - j], xg[n - j], 2, 0, z[1]);
+        term(dw[j], dg[j], xw[n - j], xg[n - j], 0, 1, z[2]);
       }
-      Sums<V> zb;
-      const int last_pair = (n - 1) / 2;
-      if constexpr (sizeof(V) == 64) {
-        // AVX-512: the pairs j, n − j, their sixteen operands (each used twice) held in registers,
-        // not loaded twice.
-        for (int j = 1; j <= last_pair; ++j) {
-          const V dj_w1 = pinned(dw[j][c1]), dj_w2 = pinned(dw[j][c2]), dj_g1 = pinned(dg[j][c1]),
-                  dj_g2 = pinned(dg[j][c2]), dn_w1 = pinned(dw[n - j][c1]),
-                  dn_w2 = pinned(dw[n - j][c2]), dn_g1 = pinned(dg[n - j][c1]),
-                  dn_g2 = pinned(dg[n - j][c2]), xj_w1 = pinned(xw[j][c1]),
-                  xj_w2 = pinned(xw[j][c2]), xj_g1 = pinned(xg[j][c1]), xj_g2 = pinned(xg[j][c2]),
-                  xn_w1 = pinned(xw[n - j][c1]), xn_w2 = pinned(xw[n - j][c2]),
-                  xn_g1 = pinned(xg[n - j][c1]), xn_g2 = pinned(xg[n - j][c2]);
-          // add(δa = δ^[j], b = x^[n−j], a = x^[j], δb = δ^[n−j]) into za, the term n − j into zb.
-          za.p = F::fma(xj_w1, dn_w2, F::fma(dj_w1, xn_w2, za.p));
-          za.rs = F::fma(xj_g1, dn_g2, F::fma(dj_g1, xn_g2, za.rs));
-          za.s = F::fma(xj_g1, dn_w2, F::fma(dj_g1, xn_w2, za.s));
-          za.t = F::fma(xj_g2, dn_w1, F::fma(dj_g2, xn_w1, za.t));
-          zb.p = F::fma(xn_w1, dj_w2, F::fma(dn_w1, xj_w2, zb.p));
-          zb.rs = F::fma(xn_g1, dj_g2, F::fma(dn_g1, xj_g2, zb.rs));
-          zb.s = F::fma(xn_g1, dj_w2, F::fma(dn_g1, xj_w2, zb.s));
-          zb.t = F::fma(xn_g2, dj_w1, F::fma(dn_g2, xj_w1, zb.t));
-        }
-      } else {
-        // 16 registers or fewer: the half za over j, then the half zb (the same order in each).
-        for (int j = 1; j <= last_pair; ++j) {
-          add(dw[j], dg[j], xw[n - j], xg[n - j], xw[j], xg[j], dw[n - j], dg[n - j], c1, c2, za);
-        }
-        for (int j = 1; j <= last_pair; ++j) {
-          add(dw[n - j], dg[n - j], xw[j], xg[j], xw[n - j], xg[n - j], dw[j], dg[j], c1, c2, zb);
-        }
-      }
-      if (n % 2 == 0) {
-        const int h = n / 2;
-        add(dw[h], dg[h], xw[h], xg[h], xw[h], xg[h], dw[h], dg[h], c1, c2, zb);
-      }
-      za.p += zb.p;
-      za.rs += zb.rs;
-      za.s += zb.s;
-      za.t += zb.t;
-      add(dw[0], dg[0], xw[n], xg[n], xw[n], xg[n], dw[0], dg[0], c1, c2, za);
-      add(dw[n], dg[n], xw[0], xg[0], xw[0], xg[0], dw[n], dg[n], c1, c2, za);
-    };
-    component(std::integral_constant<int, 0>{});
-    component(std::integral_constant<int, 1>{});
-    component(std::integral_constant<int, 2>{});
+    } else {
+      for (int j = 0; j <= n; ++j) term(dw[j], dg[j], xw[n - j], xg[n - j], 1, 2, z[0]);
+      for (int j = 0; j <= n; ++j) term(dw[j], dg[j], xw[n - j], xg[n - j], 2, 0, z[1]);
+      for (int j = 0; j <= n; ++j) term(dw[j], dg[j], xw[n - j], xg[n - j], 0, 1, z[2]);
+    }
     for (int c = 0; c < 3; ++c) {
       const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
       const V dm = (q.d_spin[c] * z[c].p + q.d_field[c] * z[c].rs +

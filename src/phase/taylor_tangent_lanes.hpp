@@ -45,34 +45,19 @@ template <class L, class F>
     for (int n = 0; n < order; ++n) {
       const Rotated& d = D[n] = rotated(dw, dgamma);
       // Σ_j δa^[j] b^[n−j] + a^[j] δb^[n−j] for ω₂ω₃ (P), γ₂γ₃ (Rs), γ₂ω₃ (S), γ₃ω₂ (T), cyclic in
-      // the lanes: the terms whose tangent coefficients are older first, the newest (δ^[n]) last.
-      // Each product added to its sum by a fused multiply-add, the two of a term one after the
-      // other; the terms j = 1..n − 1 in two halves, j and n − j together for 0 < j < n − j (the
-      // four coefficients of the pair loaded once for both) into the first and the second, then
-      // j = n/2 (n even) into the second, then the halves added.
-      L P{}, Rs{}, S{}, T{}, Pb{}, Rb{}, Sb{}, Tb{};
-      auto add = [](const Rotated& da, const Rotated& xb, const Rotated& xa, const Rotated& db,
-                    L& sum_p, L& rs, L& sum_s, L& sum_t) {
-        sum_p = F::fma(xa.w1, db.w2, F::fma(da.w1, xb.w2, sum_p));
-        rs = F::fma(xa.g1, db.g2, F::fma(da.g1, xb.g2, rs));
-        sum_s = F::fma(xa.g1, db.w2, F::fma(da.g1, xb.w2, sum_s));
-        sum_t = F::fma(xa.g2, db.w1, F::fma(da.g2, xb.w1, sum_t));
-      };
-      if (n == 0) {
-        add(d, X[0], X[0], d, P, Rs, S, T);
-      } else {
-        const int last_pair = (n - 1) / 2;
-        for (int j = 1; j <= last_pair; ++j) {
-          add(D[j], X[n - j], X[j], D[n - j], P, Rs, S, T);
-          add(D[n - j], X[j], X[n - j], D[j], Pb, Rb, Sb, Tb);
-        }
-        if (n % 2 == 0) add(D[n / 2], X[n / 2], X[n / 2], D[n / 2], Pb, Rb, Sb, Tb);
-        P += Pb;
-        Rs += Rb;
-        S += Sb;
-        T += Tb;
-        add(D[0], X[n], X[n], D[0], P, Rs, S, T);  // j = 0's first product and j = n's second
-        add(d, X[0], X[0], d, P, Rs, S, T);        // j = n's first product and j = 0's second
+      // the lanes, as Σ_{j=0..n} (δa^[j] b^[n−j] + a^[n−j] δb^[j]): the tangent's coefficient j
+      // with the state's n − j, j from 0 (the oldest tangent coefficient) to n (the newest), each
+      // sum one chain of fused multiply-adds, the two products of a term one after the other. The
+      // kernels of the Taylor ensemble (integrate/taylor_ensemble_kernel.hpp) add the same
+      // products in the same order: the same bits.
+      L P{}, Rs{}, S{}, T{};
+      for (int j = 0; j <= n; ++j) {
+        const Rotated& dj = D[j];
+        const Rotated& xn = X[n - j];
+        P = F::fma(xn.w1, dj.w2, F::fma(dj.w1, xn.w2, P));
+        Rs = F::fma(xn.g1, dj.g2, F::fma(dj.g1, xn.g2, Rs));
+        S = F::fma(xn.g1, dj.w2, F::fma(dj.g1, xn.w2, S));
+        T = F::fma(xn.g2, dj.w1, F::fma(dj.g2, xn.w1, T));
       }
       const double inv = kInverse[static_cast<std::size_t>(n)];
       const L dm_next =
