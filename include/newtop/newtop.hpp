@@ -53,6 +53,7 @@
 #include "newtop/orbit/orbit_section.hpp"
 #include "newtop/orbit/orbit_stability.hpp"
 #include "newtop/orbit/orbit_taylor.hpp"
+#include "newtop/orbit/orbit_taylor_ensemble.hpp"
 #include "newtop/orbit/resonance_continuation.hpp"
 #include "newtop/orbit/spin_orbit.hpp"
 #include "newtop/phase/chaos.hpp"

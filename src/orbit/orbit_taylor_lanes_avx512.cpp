@@ -1,0 +1,28 @@
+// The orbit's Taylor ensemble kernel (orbit_taylor_kernel.hpp) for avx512: eight doubles per
+// register. Compiled with -mavx512f -ffp-contract=off (CMakeLists.txt); run only where the CPU has
+// it (orbit_taylor_ensemble.cpp).
+
+#include "orbit_taylor_kernel.hpp"
+
+#if defined(__x86_64__) && defined(__GNUC__)
+namespace newtop::detail {
+namespace {
+
+using V = double __attribute__((vector_size(64)));
+constexpr int kLanes = 8;
+
+void expand_circular(const double* consts, const double* x, int order, double* series) {
+  orbit_taylor_simd::expand_circular<V, kLanes>(consts, x, order, series);
+}
+void expand_elliptic(const double* consts, const double* x, int order, double* series) {
+  orbit_taylor_simd::expand_elliptic<V, kLanes>(consts, x, order, series);
+}
+
+}  // namespace
+
+OrbitTaylorLaneKernel orbit_taylor_lane_kernel_avx512() {
+  return {kLanes, expand_circular, expand_elliptic};
+}
+
+}  // namespace newtop::detail
+#endif
