@@ -154,9 +154,14 @@ OrbitState orbit_taylor_sum(const OrbitTaylorSeries& s, double h) {
 }
 
 double orbit_taylor_step(const OrbitTaylorSeries& s, double abs_tol, double rel_tol) {
+  // The rule reads the norms 0, p − 1 and p, and the others only where one of the last two is zero
+  // or not finite: those are formed only then.
   std::array<double, OrbitTaylorSeries::kMaxOrder + 1> norms{};
-  for (int k = 0; k <= s.order; ++k) {
-    norms[static_cast<std::size_t>(k)] = max_norm(s.x[static_cast<std::size_t>(k)]);
+  const auto p = static_cast<std::size_t>(s.order);
+  for (std::size_t k : {std::size_t{0}, p - 1, p}) norms[k] = max_norm(s.x[k]);
+  auto regular = [](double c) { return c > 0.0 && c < std::numeric_limits<double>::infinity(); };
+  if (!regular(norms[p - 1]) || !regular(norms[p])) {
+    for (std::size_t k = 1; k + 1 < p; ++k) norms[k] = max_norm(s.x[k]);
   }
   return taylor_step_from_norms(norms.data(), s.order, abs_tol, rel_tol);
 }
