@@ -19,15 +19,12 @@
 #include "newtop/phase/chaos_ensemble.hpp"
 #include "newtop/phase/ensemble_tangent.hpp"
 #include "newtop/phase/tangent_vectors.hpp"
+#include "sweep_points.hpp"
 
 namespace newtop::sweep {
 namespace {
 
 constexpr std::size_t kSmallestGroup = 4;
-
-bool wants(const SweepFile& s, const char* q) {
-  return std::find(s.quantities.begin(), s.quantities.end(), q) != s.quantities.end();
-}
 
 bool only(const SweepFile& s, const char* a, const char* b) {
   return !s.quantities.empty() &&
@@ -310,7 +307,15 @@ std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std
                                          std::size_t* in_ensemble, std::size_t* runs) {
   std::vector<std::optional<PointResult>> out(indices.size());
   std::vector<Group> groups;
-  if (ensemble_sweep(s)) {
+  if (s.model != BaseModel::fixed_point) {
+    // Orbit scenarios: final_state and drift with method taylor through the orbit's Taylor
+    // ensemble; anything else point by point.
+    if (only(s, "final_state", "drift")) {
+      evaluate_orbit_taylor_points(s, indices, out, runs);
+    } else if (runs) {
+      *runs = 0;
+    }
+  } else if (ensemble_sweep(s)) {
     for (std::size_t slot = 0; slot < indices.size(); ++slot) {
       try {
         const io::Scenario sc = point_scenario(s, indices[slot]);
@@ -328,7 +333,7 @@ std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std
   // AVX-512 at 1.2e8 trajectory-steps/s against 9e6 for one scalar trajectory of splitting2; the
   // portable block of 12 lanes, 2.4 runs): smaller groups run point by point (the same bits).
   std::erase_if(groups, [](const Group& g) { return g.members.size() < kSmallestGroup; });
-  if (runs) *runs = groups.size();
+  if (runs && s.model == BaseModel::fixed_point) *runs = groups.size();
   for (const Group& g : groups) {
     try {
       if (g.key.method.name == "taylor" && tangent_sweep(s)) {

@@ -23,14 +23,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-/// One run of the point's scenario: the final state (at a time) and the largest drift of the
-/// Jacobi integral (circular orbit) and of the Casimirs γ·γ, n·n, γ·n (the orbit's drift observer).
-struct OrbitRun {
-  OrbitOutcome outcome;
-  double t = 0.0;  ///< the time reached (on an ellipse, from the anomaly by Kepler's equation)
-  OrbitSectionDrift drift;
-};
-
 OrbitRun run_orbit(const SweepFile& s, const io::OrbitScenario& sc) {
   const MethodSettings method = io::resolve_method(sc, s.integrate);
   const double t0 = sc.integrate.t0, t1 = io::resolve_t_end(sc, s.integrate);
@@ -124,7 +116,31 @@ OrbitChaosResult run_orbit_chaos(const SweepFile& s, const io::OrbitScenario& sc
   return orbit_chaos(EllipticOrbitModel(sc.body, std::get<EllipticOrbit>(sc.orbit)), sc.initial, c);
 }
 
+/// The values of the quantity q (drift or final_state) of a run.
+void add_run_values(const SweepFile& s, const std::string& q, const io::OrbitScenario& sc,
+                    const OrbitRun& run, std::vector<double>& v) {
+  if (q == "drift") {
+    const OrbitSectionDrift& d = run.drift;
+    if (s.model == BaseModel::circular_orbit) v.push_back(d.jacobi);
+    v.insert(v.end(), {d.gamma_gamma, d.normal_normal, d.gamma_normal});
+  } else if (q == "final_state") {
+    const OrbitState& x = run.outcome.state;
+    const Vec3 w = omega(sc.body, x);
+    v.insert(v.end(), {run.t, w.x(), w.y(), w.z(), x.gamma.x(), x.gamma.y(), x.gamma.z(),
+                       x.normal.x(), x.normal.y(), x.normal.z()});
+  }
+}
+
 }  // namespace
+
+PointResult orbit_run_result(const SweepFile& s, const io::OrbitScenario& sc, const OrbitRun& run) {
+  if (run.outcome.status != Status::finished) {
+    return {std::string(to_string(run.outcome.status)), {}};
+  }
+  PointResult r{"ok", {}};
+  for (const std::string& q : s.quantities) add_run_values(s, q, sc, run, r.values);
+  return r;
+}
 
 io::OrbitScenario orbit_point_scenario(const SweepFile& s, std::size_t index) {
   if (s.model == BaseModel::fixed_point) {
@@ -233,15 +249,8 @@ PointResult evaluate_orbit_point(const SweepFile& s, std::size_t index) {
       r.values.push_back(chaos->indicators.megno);
     } else if (q == "lyapunov_max") {
       r.values.push_back(chaos->indicators.lyapunov_max);
-    } else if (q == "drift") {
-      const OrbitSectionDrift& d = run->drift;
-      if (s.model == BaseModel::circular_orbit) r.values.push_back(d.jacobi);
-      r.values.insert(r.values.end(), {d.gamma_gamma, d.normal_normal, d.gamma_normal});
-    } else if (q == "final_state") {
-      const OrbitState& x = run->outcome.state;
-      const Vec3 w = omega(sc.body, x);
-      r.values.insert(r.values.end(), {run->t, w.x(), w.y(), w.z(), x.gamma.x(), x.gamma.y(),
-                                       x.gamma.z(), x.normal.x(), x.normal.y(), x.normal.z()});
+    } else if (q == "drift" || q == "final_state") {
+      add_run_values(s, q, sc, *run, r.values);
     } else if (q == "debra_delp") {
       add_debra_delp(sc, r.values);
     } else if (q == "synchronous_odd") {

@@ -3,9 +3,11 @@
 // pieces of a point that the orbit scenarios share with the fixed point (sweep_orbit.cpp).
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "newtop/orbit/orbit_section.hpp"
 #include "newtop/sweep/sweep.hpp"
 
 namespace newtop::sweep {
@@ -37,6 +39,26 @@ void check_model(const SweepFile& s);
 std::vector<std::string> orbit_quantity_columns(const SweepFile& s);
 void check_orbit_point(const SweepFile& s, const io::OrbitScenario& sc);
 PointResult evaluate_orbit_point(const SweepFile& s, std::size_t index);
+
+/// One run of an orbit point's scenario (final_state, drift): the outcome in the run's variable
+/// (t, or ν on an ellipse), the time reached (on an ellipse, from the anomaly by Kepler's
+/// equation) and the largest drift of the Jacobi integral (circular orbit) and of the Casimirs
+/// γ·γ, n·n, γ·n (the orbit's drift observer, from the start and after every accepted step).
+struct OrbitRun {
+  OrbitOutcome outcome;
+  double t = 0.0;
+  OrbitSectionDrift drift;
+};
+/// evaluate_orbit_point's result of a sweep whose quantities are final_state and drift only.
+PointResult orbit_run_result(const SweepFile& s, const io::OrbitScenario& sc, const OrbitRun& run);
+
+/// The points of an orbit sweep of final_state and drift only whose runs share method taylor and
+/// its tolerances, the kind of orbit, the run's start and end (t, or ν on an ellipse) and the
+/// step limit, four or more, advanced together by the orbit's Taylor ensemble
+/// (newtop/orbit/orbit_taylor_ensemble.hpp): out[slot] set for each (evaluate_orbit_point's result,
+/// bit for bit), the others left empty; `runs` counts the groups (sweep_orbit_ensemble.cpp).
+void evaluate_orbit_taylor_points(const SweepFile& s, std::span<const std::size_t> indices,
+                                  std::vector<std::optional<PointResult>>& out, std::size_t* runs);
 
 /// θ′(0) of the odd synchronous (1:1) periodic solution of Beletsky's equation (θ(0) = 0,
 /// θ(π) = 0) at (e, k), followed in e from the equilibrium θ ≡ 0 of e = 0 (natural continuation,

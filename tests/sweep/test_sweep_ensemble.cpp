@@ -98,6 +98,37 @@ TEST(SweepEnsemble, FinalStateAndDriftAreEvaluatePointsBits) {
   EXPECT_NE(r.values[6], 0.8660254037844386);  // gamma3 moved
 }
 
+// An orbit scenario with method taylor over its start and its body (a model per lane): every
+// point through the orbit's Taylor ensemble, each evaluate_point's bits; on a circle (the Jacobi
+// integral's drift too) and on an ellipse (in ν, the time reached from Kepler's equation).
+std::string orbit_taylor_sweep(const char* example, const char* t_end, const char* start_key,
+                               const char* inertia) {
+  return "scenario = \"" + newtop::test::example_path(example) +
+         "\"\nquantities = [\"final_state\", \"drift\"]\n[integrate]\nmethod = \"taylor\"\n"
+         "tol = 1e-10\nt_end = " +
+         t_end + "\n[[axes]]\nkey = \"" + start_key +
+         "\"\nvalues = [0.0, 0.03, 0.06, 0.09, 0.12]\n[[axes]]\nkey = \"body.inertia[0]\"\n"
+         "values = " +
+         inertia + "\n";
+}
+
+TEST(SweepEnsemble, OrbitTaylorFinalStateAndDriftAreEvaluatePointsBits) {
+  const SweepFile circle = newtop::sweep::load_sweep(
+      write_file("orbit_circle.toml",
+                 orbit_taylor_sweep("satellite_700km.toml", "3000.0", "initial.roll_pitch_yaw[1]",
+                                    "[1200.0, 1300.0, 1400.0]")));
+  expect_point_by_point(circle);
+  const PointResult r = newtop::sweep::evaluate_point(circle, 4);
+  ASSERT_EQ(r.status, "ok");
+  EXPECT_EQ(r.values[0], 3000.0);  // t
+  EXPECT_GT(r.values[10], 0.0);    // drift_jacobi: the run moved
+  const SweepFile ellipse = newtop::sweep::load_sweep(write_file(
+      "orbit_ellipse.toml", orbit_taylor_sweep("orbit_elliptic_pitch.toml", "3.0",
+                                               "initial.euler_321[0]", "[1.0, 1.1, 1.2]")));
+  expect_point_by_point(ellipse);
+  EXPECT_EQ(newtop::sweep::evaluate_point(ellipse, 2).values[0], 3.0);
+}
+
 TEST(SweepEnsemble, FinalStateAloneIsEvaluatePointsBits) {
   // Without drift the state is checked for non-finite numbers every 256 steps only.
   expect_point_by_point(
