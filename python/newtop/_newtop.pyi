@@ -132,8 +132,10 @@ def integrate(model: Model, state: State, t_end: float, *, t0: float = 0.0,
 @overload
 def integrate(scenario: Scenario, *, t_end: Optional[float] = None, method: Optional[str] = None,
               step: Optional[float] = None, tol: Optional[float] = None) -> dict[str, Any]: ...
-def integrate_ensemble(model_or_models: Union[Model, Sequence[Model]],
-                       states: Union[Sequence[State], Any], t_end: float, *, tol: float,
+def integrate_ensemble(model_or_models: Union[Model, Sequence[Model], OrbitModel,
+                                              Sequence[OrbitModel]],
+                       states: Union[Sequence[State], Sequence[OrbitState], Any], t_end: float,
+                       *, tol: float,
                        t0: float = 0.0, max_steps: Optional[int] = None,
                        t_eval: Optional[Sequence[float]] = None) -> dict[str, Any]: ...
 def chaos_ensemble(model_or_models: Union[Model, Sequence[Model]],

@@ -16,6 +16,7 @@
 #include "newtop/integrate/taylor_ensemble.hpp"
 #include "newtop/model/state_checks.hpp"
 #include "newtop/phase/chaos_ensemble.hpp"
+#include "orbit_ensemble.hpp"
 
 namespace py = pybind11;
 
@@ -91,6 +92,10 @@ py::dict integrate_ensemble(const py::object& model_or_models, const py::object&
                             double t_end, double tol, double t0,
                             std::optional<std::int64_t> max_steps,
                             const std::optional<std::vector<double>>& t_eval) {
+  if (is_orbit_models(model_or_models)) {
+    return orbit_integrate_ensemble(model_or_models, states_in, t_end, tol, t0, max_steps,
+                                    t_eval.has_value());
+  }
   const std::vector<QuadraticModel> models = quadratic_models(model_or_models);
   const std::vector<State> states = states_of(states_in);
   for (const State& x : states) validate(x);
@@ -192,7 +197,12 @@ void bind_ensemble(py::module_& m) {
         "integrate(model, state, t_end, tol=tol, method='taylor'). Returns a dict: without t_eval "
         "the end of each run, t (N) and m, omega, gamma (N x 3); with t_eval=times (ascending, "
         "in [t0, t_end]) t (k) and m, omega, gamma (N x k x 3), NaN after a run that stopped; "
-        "and 'outcome' (N strings), 'steps' (N), 'order'.");
+        "and 'outcome' (N strings), 'steps' (N), 'order'. With OrbitModels (one for all or one "
+        "per state, of one kind) and states a sequence of OrbitState or an (N x 9) array of rows "
+        "(m, gamma, normal): the satellites through the orbit's Taylor ensemble (docs/orbit.md "
+        "§5), each the bits of the last row of integrate(model, state, t_end, tol=tol, "
+        "method='taylor'); t (N; and nu on an ellipse), m, omega, gamma, normal (N x 3), "
+        "'outcome', 'steps', 'order' (t_eval refused).");
 }
 
 }  // namespace newtop::python

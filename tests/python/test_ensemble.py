@@ -89,3 +89,63 @@ def test_bad_input_is_refused():
         newtop.integrate_ensemble(models[0], states, T_END, tol=0.0)
     with pytest.raises(ValueError):
         newtop.integrate_ensemble(models[0], states, float("inf"), tol=TOL)
+
+
+def orbit_satellites(kind, n, rng):
+    """n satellites on one kind of orbit, a body each (one orbit for all on an ellipse but for the
+    last two, started at another true anomaly: their own group in nu), each turned from the rest
+    orientation of the orbital frame and spinning off the orbit's rate."""
+    models, states = [], []
+    for i in range(n):
+        a = rng.uniform(1.0, 1.3)
+        body = newtop.Body.from_principal([a, 1.6, 2.1], mass=1.0)
+        if kind == "circular":
+            model = newtop.OrbitModel.circular(body, mu=1.0, radius=rng.uniform(1.0, 1.5))
+        else:
+            model = newtop.OrbitModel.elliptic(body, mu=1.0, a=1.0, e=0.1,
+                                               true_anomaly=0.0 if i < n - 2 else 0.5)
+        models.append(model)
+        states.append(newtop.OrbitState.from_lvlh(
+            model, roll_pitch_yaw=list(rng.uniform(-0.2, 0.2, 3)),
+            omega_relative=list(rng.uniform(-0.3, 0.3, 3))))
+    return models, states
+
+
+@pytest.mark.parametrize("kind", ["circular", "elliptic"])
+@pytest.mark.parametrize("n", [1, 5, 11])
+def test_each_satellite_is_the_scalar_run(kind, n):
+    rng = np.random.default_rng(100 + n)
+    models, states = orbit_satellites(kind, n, rng)
+    out = newtop.integrate_ensemble(models, states, 9.0, tol=TOL)
+    assert out["m"].shape == (n, 3) and out["normal"].shape == (n, 3)
+    assert ("nu" in out) == (kind == "elliptic")
+    for i in range(n):
+        one = newtop.integrate(models[i], states[i], 9.0, tol=TOL, method="taylor")
+        assert out["outcome"][i] == one["outcome"] == "finished"
+        assert out["steps"][i] == one["steps"] > 10
+        assert out["t"][i] == one["t"][-1]
+        for key in ("m", "omega", "gamma", "normal"):
+            assert np.array_equal(out[key][i], one[key][-1]), (kind, i, key)
+    # One model for all, the states as an (N x 9) array: the same bits as that model per state.
+    rows = np.array([np.concatenate([s.m, s.gamma, s.normal]) for s in states])
+    shared = newtop.integrate_ensemble(models[0], rows, 9.0, tol=TOL)
+    each = newtop.integrate_ensemble([models[0]] * n, states, 9.0, tol=TOL)
+    assert np.array_equal(shared["m"], each["m"]) and np.array_equal(shared["t"], each["t"])
+
+
+def test_orbit_ensemble_refuses_bad_input():
+    rng = np.random.default_rng(7)
+    circ, states = orbit_satellites("circular", 3, rng)
+    ell, _ = orbit_satellites("elliptic", 3, rng)
+    with pytest.raises(ValueError, match="t_eval"):
+        newtop.integrate_ensemble(circ, states, 1.0, tol=TOL, t_eval=[0.5])
+    with pytest.raises(ValueError, match="one kind"):
+        newtop.integrate_ensemble([circ[0], ell[1], circ[2]], states, 1.0, tol=TOL)
+    with pytest.raises(ValueError, match="model_or_models"):
+        newtop.integrate_ensemble(circ[:2], states, 1.0, tol=TOL)
+    with pytest.raises(ValueError, match="N x 9"):
+        newtop.integrate_ensemble(circ[0], np.zeros((3, 6)), 1.0, tol=TOL)
+    with pytest.raises(ValueError, match="t_end"):
+        newtop.integrate_ensemble(circ[0], states, -1.0, tol=TOL)
+    with pytest.raises(ValueError, match="tol"):
+        newtop.integrate_ensemble(circ[0], states, 1.0, tol=0.0)
