@@ -1,6 +1,6 @@
 // Chaos indicators on an orbit (orbit_chaos.hpp): the variational equations of the orbit model
 // as one more model of the engine (a state of its own, a right-hand side bound to odeint's
-// numbers), run by the engine's embedded pairs through the one driver.
+// numbers), run by the engine's embedded pairs or by Taylor's method through the one driver.
 
 #include "newtop/orbit/orbit_chaos.hpp"
 
@@ -13,6 +13,7 @@
 #include "newtop/integrate/dop853.hpp"
 #include "newtop/integrate/runge_kutta.hpp"
 #include "newtop/orbit/orbit_stability.hpp"
+#include "newtop/orbit/orbit_taylor.hpp"
 
 namespace newtop {
 namespace {
@@ -152,12 +153,78 @@ class Renormalising {
   bool on_;
 };
 
+/// Taylor's method on the state and its tangent vectors (docs/orbit.md §5): a step sums the series
+/// of both at h, h the smaller of the step asked for and the rule's step over the coefficients of
+/// the state and the vectors together; dt becomes that step (as the fixed point's
+/// TangentTaylorStepper). Never rejected unless a series is not finite.
+template <int K>
+class TangentTaylor {
+ public:
+  TangentTaylor(double abs_tol, double rel_tol)
+      : abs_tol_(abs_tol),
+        rel_tol_(rel_tol),
+        order_(OrbitTaylorStepper(abs_tol, rel_tol).order()) {}
+  int order() const { return order_; }
+
+  template <class M>
+  double initial_step(const TangentModel<M, K>& m, const TangentState<K>& x, double t0, double) {
+    expand(*m.model, x, t0);
+    return detail::orbit_tangent_step(series_, tangent_, abs_tol_, rel_tol_);
+  }
+
+  template <class M>
+  bool try_step(const TangentModel<M, K>& m, TangentState<K>& x, double& t, double& dt) {
+    expand(*m.model, x, t);
+    const double h_max = detail::orbit_tangent_step(series_, tangent_, abs_tol_, rel_tol_);
+    if (!(h_max > 0.0)) {  // NaN: a series is not finite
+      dt *= kNonFiniteShrink;
+      return false;
+    }
+    const double h = std::abs(dt) <= h_max ? dt : (dt < 0 ? -h_max : h_max);
+    x.x = detail::orbit_taylor_sum(series_, h);
+    for (int c = 0; c < K; ++c) {
+      const std::array<double, 9> v = detail::orbit_tangent_sum(tangent_, c, h);
+      x.V.col(c) = Eigen::Map<const Eigen::Matrix<double, 9, 1>>(v.data());
+    }
+    t += h;
+    dt = h < 0 ? -h_max : h_max;
+    return true;
+  }
+
+ private:
+  template <class M>
+  void expand(const M& model, const TangentState<K>& x, double t) {
+    tangent_.columns = K;
+    for (int c = 0; c < K; ++c) {
+      for (int i = 0; i < 9; ++i) {
+        tangent_.v[static_cast<std::size_t>(c)][0][static_cast<std::size_t>(i)] = x.V(i, c);
+      }
+    }
+    if constexpr (std::is_same_v<M, EllipticOrbitModel>) {
+      detail::orbit_taylor_expand(model, x.x, t, order_, series_);
+      detail::orbit_taylor_expand_tangent(model, series_, t, tangent_);
+    } else {
+      detail::orbit_taylor_expand(model, x.x, order_, series_);
+      detail::orbit_taylor_expand_tangent(model, series_, tangent_);
+    }
+  }
+
+  double abs_tol_, rel_tol_;
+  int order_;
+  detail::OrbitTaylorSeries series_;
+  detail::OrbitTangentSeries tangent_;
+};
+
 namespace odeint = boost::numeric::odeint;
 
 /// Calls fn(stepper) with the named pair on K tangent vectors.
 template <int K, class Fn>
 decltype(auto) with_pair(const MethodSettings& m, bool renormalise_on, Fn&& fn) {
   using Y = TangentNumbers<K>;
+  if (m.name == "taylor") {
+    Renormalising<TangentTaylor<K>, K> s(m.abs_tol, m.rel_tol, renormalise_on);
+    return fn(s);
+  }
   if (m.name == "dopri5") {
     Renormalising<EmbeddedRkOn<odeint::runge_kutta_dopri5<Y>, 5>, K> s(m.abs_tol, m.rel_tol,
                                                                        renormalise_on);
@@ -180,10 +247,10 @@ IntegrateOptions tangent_options(std::int64_t max_steps, double a, double b) {
 }
 
 void check_pair(const MethodSettings& method) {
-  if (!is_orbit_adaptive_method(method.name) || method.name == "taylor") {
+  if (!is_orbit_adaptive_method(method.name)) {
     throw InputError(
-        "method: chaos on an orbit integrates the variational equations with an embedded pair: "
-        "expected rkf78, dopri5 or dop853 (with --tol), found '" +
+        "method: chaos on an orbit integrates the variational equations with a tolerance: "
+        "expected rkf78, dopri5, dop853 or taylor (with --tol), found '" +
         method.name + "'");
   }
   validate_orbit_method(method);

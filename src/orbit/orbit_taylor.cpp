@@ -98,18 +98,12 @@ void orbit_taylor_expand(const CircularOrbitModel& model, const OrbitState& x, i
   z.write(order, s);
 }
 
-// d/dν x = (σ m × ω + σλ γ × Iγ, σ γ × ω + n × γ, σ n × ω) with u = 1 + e cos ν,
-// σ = (1 − e²)^{3/2}/(n u²) and σλ = 3n u/(1 − e²)^{3/2} (orbit.hpp's time_per_anomaly and
-// lambda_at): the series of cos ν from its derivatives, 1/u by the recurrence of a quotient.
-void orbit_taylor_expand(const EllipticOrbitModel& model, const OrbitState& x, double nu, int order,
-                         OrbitTaylorSeries& s) {
-  check_orbit_taylor_order(order);
-  const Body& body = model.body();
-  const EllipticOrbit& orbit = model.orbit();
+void orbit_anomaly_series(const EllipticOrbit& orbit, double nu, int order, double* sigma,
+                          double* sigma_lambda) {
   const double e = orbit.eccentricity, n_mean = orbit.mean_motion;
   const double q = std::pow(1.0 - e * e, 1.5);
   const double c_sigma = q / n_mean, c_lambda = 3.0 * n_mean / q;
-  Series1 u{}, inv_u{}, sigma{}, sigma_lambda{};
+  Series1 u{}, inv_u{};
   const double cos0 = std::cos(nu), sin0 = std::sin(nu);
   double factorial_inv = 1.0;
   for (int k = 0; k < order; ++k) {  // σ and σλ to the order order − 1 of ẋ
@@ -127,6 +121,17 @@ void orbit_taylor_expand(const EllipticOrbitModel& model, const OrbitState& x, d
     sigma[i] = c_sigma * sq;
     sigma_lambda[i] = c_lambda * u[i];
   }
+}
+
+// d/dν x = (σ m × ω + σλ γ × Iγ, σ γ × ω + n × γ, σ n × ω) with u = 1 + e cos ν,
+// σ = (1 − e²)^{3/2}/(n u²) and σλ = 3n u/(1 − e²)^{3/2} (orbit.hpp's time_per_anomaly and
+// lambda_at): the series of cos ν from its derivatives, 1/u by the recurrence of a quotient.
+void orbit_taylor_expand(const EllipticOrbitModel& model, const OrbitState& x, double nu, int order,
+                         OrbitTaylorSeries& s) {
+  check_orbit_taylor_order(order);
+  const Body& body = model.body();
+  Series1 sigma{}, sigma_lambda{};
+  orbit_anomaly_series(model.orbit(), nu, order, sigma.data(), sigma_lambda.data());
   OrbitSeries z(body, x);
   Series3 mw, gig, gw, nw;  // the series of m × ω, γ × Iγ, γ × ω, n × ω
   for (int k = 0; k < order; ++k) {

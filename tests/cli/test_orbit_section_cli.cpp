@@ -99,7 +99,7 @@ TEST(OrbitSectionCli, BadCombinationsAreOneLineBeforeWork) {
   // chaos on an orbit refuses the scenario's splitting (it has no tangent map there), saying so.
   const CliResult c = run("chaos " + leo());
   EXPECT_EQ(c.code, 2);
-  EXPECT_NE(c.err.find("expected rkf78, dopri5 or dop853"), std::string::npos) << c.err;
+  EXPECT_NE(c.err.find("expected rkf78, dopri5, dop853 or taylor"), std::string::npos) << c.err;
 }
 
 }  // namespace

@@ -3,8 +3,9 @@
 /// Chaos indicators on an orbit (docs/orbit.md §13): the maximal Lyapunov exponent, the spectrum,
 /// MEGNO and the FLI of the orbit model, from its variational equations
 /// δx′ = J(x) δx (J the Jacobian of rhs, orbit_stability.hpp) integrated beside (m, γ, n) by an
-/// embedded Runge–Kutta pair on the engine's one driver (integrate/driver.hpp), the tangent
-/// vectors renormalised after every accepted step (phase/chaos.hpp accumulates the indicators).
+/// embedded Runge–Kutta pair or by Taylor's method (the variational recurrences of
+/// orbit_taylor.hpp) on the engine's one driver (integrate/driver.hpp), the tangent vectors
+/// renormalised after every accepted step (phase/chaos.hpp accumulates the indicators).
 ///
 /// The tangent vectors start on the symplectic leaf of the Casimirs (leaf_basis) and stay on it:
 /// the spectrum is the six exponents of the leaf, which a Hamiltonian flow pairs as ±λ (the
@@ -22,8 +23,8 @@ namespace newtop {
 
 /// What a chaos run on an orbit does (one struct, no positional list).
 struct OrbitChaosSettings {
-  /// An embedded pair with its tolerances: rkf78, dopri5 or dop853 (the variational equations
-  /// are integrated by it; a splitting composition and taylor are refused).
+  /// A method with its tolerances: rkf78, dopri5, dop853 or taylor (the variational equations
+  /// are integrated by it; a splitting composition is refused).
   MethodSettings method;
   double t0 = 0.0;  ///< start time
   double t1 = 0.0;  ///< end time (> t0; in time on an ellipse too)
@@ -42,7 +43,7 @@ struct OrbitChaosResult {
   phase::ChaosSample indicators;
 };
 
-/// Throws InputError naming `method` unless it is one of the orbit's embedded pairs with
+/// Throws InputError naming `method` unless it is one of the orbit's adaptive methods with
 /// tolerances > 0, and naming `t_end` unless t1 > t0 (both finite).
 void check_orbit_chaos_settings(const OrbitChaosSettings& settings);
 
@@ -53,7 +54,7 @@ OrbitChaosResult orbit_chaos(const EllipticOrbitModel& model, const OrbitState& 
                              const OrbitChaosSettings& settings);
 
 /// The tangent map Φ = ∂x(b)/∂x(a) of the flow from a to b (t, or ν on an ellipse), from the
-/// variational equations with the named pair, unrenormalised (for checks against finite
+/// variational equations with the named method, unrenormalised (for checks against finite
 /// differences of the flow).
 Eigen::Matrix<double, 9, 9> orbit_tangent_map(const MethodSettings& method,
                                               const CircularOrbitModel& model, const OrbitState& x,

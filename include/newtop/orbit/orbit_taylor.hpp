@@ -31,6 +31,33 @@ void orbit_taylor_expand(const CircularOrbitModel& model, const OrbitState& x, i
                          OrbitTaylorSeries& s);
 void orbit_taylor_expand(const EllipticOrbitModel& model, const OrbitState& x, double nu, int order,
                          OrbitTaylorSeries& s);
+/// The coefficients 0..order − 1 of σ = dt/dν and σλ along an ellipse from the true anomaly nu
+/// (the factors of the elliptic recurrences).
+void orbit_anomaly_series(const EllipticOrbit& orbit, double nu, int order, double* sigma,
+                          double* sigma_lambda);
+
+/// The coefficients δx^[k], k = 0..order, of tangent vectors (columns) along a series of the state.
+struct OrbitTangentSeries {
+  static constexpr int kMaxColumns = 9;
+  int order = 0;
+  int columns = 0;
+  std::array<std::array<std::array<double, 9>, OrbitTaylorSeries::kMaxOrder + 1>, kMaxColumns> v{};
+};
+
+/// The coefficients 1..s.order of each column of ts from its coefficient 0 (ts.v[c][0], c <
+/// ts.columns), along the state's series s (on an ellipse at the true anomaly nu): the
+/// variational equations δx′ = J(x) δx expanded with the state (orbit_taylor_tangent.cpp).
+void orbit_taylor_expand_tangent(const CircularOrbitModel& model, const OrbitTaylorSeries& s,
+                                 OrbitTangentSeries& ts);
+void orbit_taylor_expand_tangent(const EllipticOrbitModel& model, const OrbitTaylorSeries& s,
+                                 double nu, OrbitTangentSeries& ts);
+/// Column c of the tangent series summed at h (Horner).
+std::array<double, 9> orbit_tangent_sum(const OrbitTangentSeries& ts, int c, double h);
+/// The step rule on the state's and the columns' coefficients together (the max norm of each
+/// order over all of them; NaN when one is not finite).
+double orbit_tangent_step(const OrbitTaylorSeries& s, const OrbitTangentSeries& ts, double abs_tol,
+                          double rel_tol);
+
 /// Throws InputError unless 1 ≤ order ≤ OrbitTaylorSeries::kMaxOrder.
 void check_orbit_taylor_order(int order);
 /// The series summed at h (Horner).
