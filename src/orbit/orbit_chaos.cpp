@@ -138,7 +138,12 @@ class Renormalising {
   template <class M>
   bool try_step(const M& model, TangentState<K>& x, double& t, double& dt) {
     if (!inner_.try_step(model, x, t, dt)) return false;
-    if (on_) {
+    if (on_ && K == 1) {
+      Eigen::Matrix<double, 9, 1> v = x.V.col(0);
+      x.growth = {};
+      x.growth[0] = detail::orbit_leaf_renormalise(x.x, v);
+      x.V.col(0) = v;
+    } else if (on_) {
       // The exact tangent flow keeps the vectors on the leaf; the step's error does not, and a
       // component across it (exponent 0) would swamp the contracting directions: projected back.
       const OrbitLeafBasis Q = leaf_basis(x.x);
@@ -262,11 +267,10 @@ OrbitChaosResult chaos_on(const M& model, const OrbitState& x0, double a, double
                           const OrbitChaosSettings& st, Time&& time) {
   TangentState<K> s;
   s.x = x0;
-  const OrbitLeafBasis leaf = leaf_basis(x0);
   if constexpr (K == 1) {
-    s.V = leaf * Eigen::Matrix<double, 6, 1>::Constant(1.0 / std::sqrt(6.0));
+    s.V = detail::orbit_chaos_start(x0);
   } else {
-    s.V = leaf;
+    s.V = leaf_basis(x0);
   }
   const TangentModel<M, K> tangent{&model};
   phase::ChaosIndicators ind(st.t0, K);
@@ -311,6 +315,24 @@ Eigen::Matrix<double, 9, 9> tangent_map(const MethodSettings& method, const M& m
 }
 
 }  // namespace
+
+namespace detail {
+
+double orbit_leaf_renormalise(const OrbitState& x, Eigen::Matrix<double, 9, 1>& v) {
+  // The exact tangent flow keeps the vector on the leaf; the step's error does not, and a
+  // component across it (exponent 0) would swamp the contracting directions: projected back.
+  const OrbitLeafBasis Q = leaf_basis(x);
+  v = Q * (Q.transpose() * v);
+  const double norm = v.norm();
+  v /= norm;
+  return std::log(norm);
+}
+
+Eigen::Matrix<double, 9, 1> orbit_chaos_start(const OrbitState& x0) {
+  return leaf_basis(x0) * Eigen::Matrix<double, 6, 1>::Constant(1.0 / std::sqrt(6.0));
+}
+
+}  // namespace detail
 
 void check_orbit_chaos_settings(const OrbitChaosSettings& settings) {
   check_pair(settings.method);

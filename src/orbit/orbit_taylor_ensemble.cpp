@@ -11,6 +11,7 @@
 #include <string>
 #include <type_traits>
 
+#include "newtop/orbit/orbit_chaos.hpp"
 #include "newtop/orbit/orbit_taylor.hpp"
 #include "orbit_taylor_kernel.hpp"
 
@@ -51,7 +52,7 @@ class BatchRun {
   BatchRun(const detail::OrbitTaylorLaneKernel& kernel, int order, double abs_tol, double rel_tol,
            std::span<const M> models, std::span<const OrbitState> states, double t0, double t1,
            const IntegrateOptions& opt, const OrbitEnsembleObserver& obs,
-           std::vector<double>& workspace)
+           std::vector<double>& workspace, const OrbitChaosObserver* chaos = nullptr)
       : kernel_(kernel),
         L_(static_cast<std::size_t>(kernel.lanes)),
         order_(order),
@@ -65,12 +66,16 @@ class BatchRun {
         dir_(t1 - t0 > 0 ? 1.0 : -1.0),
         opt_(opt),
         obs_(obs),
+        chaos_(chaos),
         lanes_(L_),
         outcomes_(states.size()) {
-    workspace.assign((detail::kOrbitLaneRows + 9 + 9 * (order + 1)) * L_, 0.0);
+    const std::size_t coefficients = 9 * static_cast<std::size_t>(order + 1) * L_;
+    workspace.assign((detail::kOrbitLaneRows + 9 + 9) * L_ + 2 * coefficients, 0.0);
     consts_ = workspace.data();
     x_ = consts_ + detail::kOrbitLaneRows * L_;
-    series_ = x_ + 9 * L_;
+    v_ = x_ + 9 * L_;
+    series_ = v_ + 9 * L_;
+    tangent_ = series_ + coefficients;
   }
 
   std::vector<OrbitOutcome> run() {
@@ -85,8 +90,10 @@ class BatchRun {
           consts_[detail::kOrbitSin * L_ + l] = std::sin(lanes_[l].t);
         }
         kernel_.expand_elliptic(consts_, x_, order_, series_);
+        if (chaos_) kernel_.expand_tangent_elliptic(consts_, series_, v_, order_, tangent_);
       } else {
         kernel_.expand_circular(consts_, x_, order_, series_);
+        if (chaos_) kernel_.expand_tangent_circular(consts_, series_, v_, order_, tangent_);
       }
       for (std::size_t l = 0; l < L_; ++l) {
         if (lanes_[l].active) step(l);
@@ -106,7 +113,10 @@ class BatchRun {
   void copy_lane(std::size_t from, std::size_t to) {
     for (std::size_t q = 0; q < detail::kOrbitLaneRows; ++q)
       consts_[q * L_ + to] = consts_[q * L_ + from];
-    for (std::size_t c = 0; c < 9; ++c) x_[c * L_ + to] = x_[c * L_ + from];
+    for (std::size_t c = 0; c < 9; ++c) {
+      x_[c * L_ + to] = x_[c * L_ + from];
+      v_[c * L_ + to] = v_[c * L_ + from];
+    }
     lanes_[to].t = lanes_[from].t;
   }
 
@@ -117,6 +127,9 @@ class BatchRun {
       x_[(3 + i) * L_ + l] = x.gamma[c];
       x_[(6 + i) * L_ + l] = x.normal[c];
     }
+  }
+  void set_vector(std::size_t l, const OrbitVector& v) {
+    for (std::size_t c = 0; c < 9; ++c) v_[c * L_ + l] = v[static_cast<Eigen::Index>(c)];
   }
 
   void set_model(std::size_t l, const M& model) {
@@ -150,13 +163,14 @@ class BatchRun {
       r.t = t0_;
       r.out.t = t0_;
       r.out.state = states_[p];
-      if (obs_) obs_(p, t0_, states_[p]);
+      if (obs_ && !chaos_) obs_(p, t0_, states_[p]);
       if (span_ == 0.0) {
         outcomes_[p] = r.out;
         continue;
       }
       set_model(l, models_.size() == 1 ? models_[0] : models_[p]);
       set_state(l, states_[p]);
+      if (chaos_) set_vector(l, detail::orbit_chaos_start(states_[p]));
       r.active = true;
       return;
     }
@@ -167,7 +181,7 @@ class BatchRun {
     refill(l);
   }
 
-  // The lane's series as the scalar stepper holds it.
+  // The lane's series as the scalar stepper holds it (and its tangent vector's).
   void lane_series(std::size_t l, detail::OrbitTaylorSeries& s) const {
     s.order = order_;
     for (int k = 0; k <= order_; ++k) {
@@ -177,17 +191,32 @@ class BatchRun {
       }
     }
   }
+  void lane_tangent(std::size_t l, detail::OrbitTangentSeries& ts) const {
+    ts.order = order_;
+    ts.columns = 1;
+    for (int k = 0; k <= order_; ++k) {
+      for (std::size_t c = 0; c < 9; ++c) {
+        ts.v[0][static_cast<std::size_t>(k)][c] =
+            tangent_[(9 * static_cast<std::size_t>(k) + c) * L_ + l];
+      }
+    }
+  }
 
   // One pass of run_adaptive's loop for the lane, with OrbitTaylorStepper::try_step on the series
-  // formed at the lane's point.
+  // formed at the lane's point (with a tangent vector, orbit_chaos's stepper: the step rule over
+  // the state and the vector, dt after a step the step at its start, the vector renormalised on
+  // the leaf before the driver's check that the trial is finite).
   void step(std::size_t l) {
     LaneRun& r = lanes_[l];
     detail::OrbitTaylorSeries s;
     lane_series(l, s);
-    const double step = detail::orbit_taylor_step(s, abs_tol_, rel_tol_);
+    detail::OrbitTangentSeries ts;
+    if (chaos_) lane_tangent(l, ts);
+    const double step = chaos_ ? detail::orbit_tangent_step(s, ts, abs_tol_, rel_tol_)
+                               : detail::orbit_taylor_step(s, abs_tol_, rel_tol_);
     if (r.next == LaneRun::Next::initial) {
       r.dt = dir_ * (opt_.initial_step > 0 ? opt_.initial_step : step);
-    } else if (r.next == LaneRun::Next::after_step) {
+    } else if (r.next == LaneRun::Next::after_step && !chaos_) {
       r.dt = r.h < 0 ? -step : step;
     }
     if (r.out.steps + r.out.rejected >= opt_.max_steps) {
@@ -214,11 +243,19 @@ class BatchRun {
     }
     const double h = std::abs(r.dt) <= step ? r.dt : (r.dt < 0 ? -step : step);
     const OrbitState trial = detail::orbit_taylor_sum(s, h);
-    if (!is_finite(trial)) {
+    OrbitVector v;
+    double growth = 0.0;
+    if (chaos_) {
+      const std::array<double, 9> y = detail::orbit_tangent_sum(ts, 0, h);
+      v = Eigen::Map<const OrbitVector>(y.data());
+      growth = detail::orbit_leaf_renormalise(trial, v);
+    }
+    if (!is_finite(trial) || (chaos_ && !v.allFinite())) {
       r.dt = kNonFiniteShrink * dt_tried;
       ++r.out.rejected;
       return;
     }
+    if (chaos_) r.dt = h < 0 ? -step : step;
     r.h = h;
     r.t = last ? t1_ : r.t + h;
     ++r.out.steps;
@@ -226,7 +263,12 @@ class BatchRun {
     r.out.state = trial;
     r.out.last_step = dt_tried;
     set_state(l, trial);
-    if (obs_) obs_(r.point, r.t, trial);
+    if (chaos_) {
+      set_vector(l, v);
+      (*chaos_)(r.point, r.t, trial, growth);
+    } else if (obs_) {
+      obs_(r.point, r.t, trial);
+    }
     r.next = LaneRun::Next::after_step;
     if (!(dir_ * (t1_ - r.t) > 0)) finish(l);
   }
@@ -240,10 +282,11 @@ class BatchRun {
   double t0_, t1_, span_, dir_;
   const IntegrateOptions& opt_;
   const OrbitEnsembleObserver& obs_;
+  const OrbitChaosObserver* chaos_;
   std::vector<LaneRun> lanes_;
   std::vector<OrbitOutcome> outcomes_;
   std::size_t next_ = 0;
-  double *consts_ = nullptr, *x_ = nullptr, *series_ = nullptr;
+  double *consts_ = nullptr, *x_ = nullptr, *v_ = nullptr, *series_ = nullptr, *tangent_ = nullptr;
 };
 
 template <class M>
@@ -251,7 +294,8 @@ std::vector<OrbitOutcome> run_batch(const OrbitTaylorEnsemble& e, std::span<cons
                                     std::span<const OrbitState> states, double t0, double t1,
                                     const IntegrateOptions& options,
                                     const OrbitEnsembleObserver& observer, double abs_tol,
-                                    double rel_tol, std::vector<double>& workspace) {
+                                    double rel_tol, std::vector<double>& workspace,
+                                    const OrbitChaosObserver* chaos = nullptr) {
   if (models.size() != 1 && models.size() != states.size()) {
     throw InputError("models: expected 1 or one per state (" + std::to_string(states.size()) +
                      "), found " + std::to_string(models.size()));
@@ -261,7 +305,7 @@ std::vector<OrbitOutcome> run_batch(const OrbitTaylorEnsemble& e, std::span<cons
   for (const OrbitState& x : states) check_state(x);
   if (states.empty()) return {};
   return BatchRun<M>(kernel_of(e.path()), e.order(), abs_tol, rel_tol, models, states, t0, t1,
-                     options, observer, workspace)
+                     options, observer, workspace, chaos)
       .run();
 }
 
@@ -299,6 +343,24 @@ std::vector<OrbitOutcome> OrbitTaylorEnsemble::integrate(std::span<const Ellipti
                                                          const OrbitEnsembleObserver& observer) {
   return run_batch(*this, models, states, nu0, nu1, options, observer, abs_tol_, rel_tol_,
                    workspace_);
+}
+
+std::vector<OrbitOutcome> OrbitTaylorEnsemble::integrate_chaos(
+    std::span<const CircularOrbitModel> models, std::span<const OrbitState> states, double t0,
+    double t1, const IntegrateOptions& options, const OrbitChaosObserver& observer) {
+  const OrbitChaosObserver on_step =
+      observer ? observer : [](std::size_t, double, const OrbitState&, double) {};
+  return run_batch(*this, models, states, t0, t1, options, {}, abs_tol_, rel_tol_, workspace_,
+                   &on_step);
+}
+
+std::vector<OrbitOutcome> OrbitTaylorEnsemble::integrate_chaos(
+    std::span<const EllipticOrbitModel> models, std::span<const OrbitState> states, double nu0,
+    double nu1, const IntegrateOptions& options, const OrbitChaosObserver& observer) {
+  const OrbitChaosObserver on_step =
+      observer ? observer : [](std::size_t, double, const OrbitState&, double) {};
+  return run_batch(*this, models, states, nu0, nu1, options, {}, abs_tol_, rel_tol_, workspace_,
+                   &on_step);
 }
 
 }  // namespace newtop

@@ -17,11 +17,20 @@ void expand_circular(const double* consts, const double* x, int order, double* s
 void expand_elliptic(const double* consts, const double* x, int order, double* series) {
   orbit_taylor_simd::expand_elliptic<V, kLanes>(consts, x, order, series);
 }
+void expand_tangent_circular(const double* consts, const double* series, const double* v, int order,
+                             double* tangent) {
+  orbit_taylor_simd::expand_tangent_circular<V, kLanes>(consts, series, v, order, tangent);
+}
+void expand_tangent_elliptic(const double* consts, const double* series, const double* v, int order,
+                             double* tangent) {
+  orbit_taylor_simd::expand_tangent_elliptic<V, kLanes>(consts, series, v, order, tangent);
+}
 
 }  // namespace
 
 OrbitTaylorLaneKernel orbit_taylor_lane_kernel_avx2() {
-  return {kLanes, expand_circular, expand_elliptic};
+  return {kLanes, expand_circular, expand_elliptic, expand_tangent_circular,
+          expand_tangent_elliptic};
 }
 
 }  // namespace newtop::detail

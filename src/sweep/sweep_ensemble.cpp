@@ -308,9 +308,9 @@ std::vector<PointResult> evaluate_points(const SweepFile& s, std::span<const std
   std::vector<std::optional<PointResult>> out(indices.size());
   std::vector<Group> groups;
   if (s.model != BaseModel::fixed_point) {
-    // Orbit scenarios: final_state and drift with method taylor through the orbit's Taylor
-    // ensemble; anything else point by point.
-    if (only(s, "final_state", "drift")) {
+    // Orbit scenarios: final_state and drift, or megno and lyapunov_max, with method taylor
+    // through the orbit's Taylor ensemble; anything else point by point.
+    if (only(s, "final_state", "drift") || tangent_sweep(s)) {
       evaluate_orbit_taylor_points(s, indices, out, runs);
     } else if (runs) {
       *runs = 0;

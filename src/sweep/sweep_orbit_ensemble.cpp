@@ -1,9 +1,10 @@
 // Points of an orbit sweep run with method taylor, advanced together by the orbit's Taylor ensemble
 // (sweep_points.hpp, evaluate_orbit_taylor_points). Each group's runs are sweep_orbit.cpp's
-// run_orbit, point by point in lanes: the same settings (resolve_method, resolve_t_end, the step
-// limit), run_orbit_method's options (the first trial step |b − a|/1000), the drift observed from
-// the start and after every accepted step; the ensemble gives each trajectory the scalar run's
-// bits, so each point's result is evaluate_orbit_point's.
+// run_orbit (final_state, drift) or run_orbit_chaos (megno, lyapunov_max), point by point in
+// lanes: the same settings (resolve_method, resolve_t_end, the step limit), the same options (the
+// first trial step |b − a|/1000), the drift observed from the start and after every accepted step,
+// or the chaos indicators accumulated after every accepted step at its time; the ensemble gives
+// each trajectory the scalar run's bits, so each point's result is evaluate_orbit_point's.
 
 #include <algorithm>
 #include <cmath>
@@ -11,6 +12,7 @@
 
 #include "newtop/io/orbit_scenario.hpp"
 #include "newtop/io/orbit_settings.hpp"
+#include "newtop/orbit/orbit_chaos.hpp"
 #include "newtop/orbit/orbit_taylor_ensemble.hpp"
 #include "sweep_points.hpp"
 
@@ -59,8 +61,69 @@ std::optional<OrbitKey> run_key(const SweepFile& s, const io::OrbitScenario& sc)
   return k;
 }
 
+/// A group of chaos runs (megno, lyapunov_max): orbit_chaos's tangent run of each point
+/// (run_orbit_chaos), the indicators accumulated per point at the time of each step.
+void run_chaos_group(const SweepFile& s, const Group& g,
+                     std::vector<std::optional<PointResult>>& out) {
+  const OrbitKey& k = g.key;
+  OrbitChaosSettings check;
+  check.method = k.method;
+  check.t0 = g.members[0].sc.integrate.t0;
+  check.t1 = io::resolve_t_end(g.members[0].sc, s.integrate);
+  check_orbit_chaos_settings(check);
+  OrbitTaylorEnsemble ensemble(k.method.abs_tol, k.method.rel_tol);
+  IntegrateOptions options;  // orbit_chaos's
+  options.max_steps = k.max_steps;
+  options.initial_step = std::abs(k.b - k.a) / 1000.0;
+  const std::size_t n = g.members.size();
+  std::vector<OrbitState> x;
+  std::vector<phase::ChaosIndicators> ind;
+  for (const Member& p : g.members) {
+    x.push_back(p.sc.initial);
+    ind.emplace_back(p.sc.integrate.t0, 1);
+  }
+  std::vector<OrbitOutcome> outcomes;
+  auto grow = [&](std::size_t j, double t, double log_growth) {
+    std::array<double, 6> growth{};
+    growth[0] = log_growth;
+    ind[j].accumulate(t, growth);
+  };
+  if (k.elliptic) {
+    std::vector<EllipticOrbitModel> models;
+    for (const Member& p : g.members) {
+      models.emplace_back(p.sc.body, std::get<EllipticOrbit>(p.sc.orbit));
+    }
+    outcomes = ensemble.integrate_chaos(models, x, k.a, k.b, options,
+                                        [&](std::size_t j, double nu, const OrbitState&, double d) {
+                                          const double t0 = g.members[j].sc.integrate.t0;
+                                          grow(j, t0 + elapsed_time(models[j].orbit(), k.a, nu), d);
+                                        });
+  } else {
+    std::vector<CircularOrbitModel> models;
+    for (const Member& p : g.members) {
+      models.emplace_back(p.sc.body, std::get<CircularOrbit>(p.sc.orbit));
+    }
+    outcomes = ensemble.integrate_chaos(
+        models, x, k.a, k.b, options,
+        [&](std::size_t j, double t, const OrbitState&, double d) { grow(j, t, d); });
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    if (outcomes[j].status != Status::finished) {
+      out[g.members[j].slot] = PointResult{std::string(to_string(outcomes[j].status)), {}};
+      continue;
+    }
+    const phase::ChaosSample c = ind[j].sample();
+    PointResult r{"ok", {}};
+    for (const std::string& q : s.quantities) {
+      r.values.push_back(q == "megno" ? c.megno : c.lyapunov_max);
+    }
+    out[g.members[j].slot] = std::move(r);
+  }
+}
+
 void run_group(const SweepFile& s, const Group& g, std::vector<std::optional<PointResult>>& out) {
   const OrbitKey& k = g.key;
+  if (wants(s, "megno") || wants(s, "lyapunov_max")) return run_chaos_group(s, g, out);
   validate_orbit_method(k.method);
   OrbitTaylorEnsemble ensemble(k.method.abs_tol, k.method.rel_tol);
   IntegrateOptions options;  // run_orbit_method's

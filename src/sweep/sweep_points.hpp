@@ -52,7 +52,8 @@ struct OrbitRun {
 /// evaluate_orbit_point's result of a sweep whose quantities are final_state and drift only.
 PointResult orbit_run_result(const SweepFile& s, const io::OrbitScenario& sc, const OrbitRun& run);
 
-/// The points of an orbit sweep of final_state and drift only whose runs share method taylor and
+/// The points of an orbit sweep of final_state and drift only (or of megno and lyapunov_max only:
+/// orbit_chaos's tangent runs) whose runs share method taylor and
 /// its tolerances, the kind of orbit, the run's start and end (t, or ν on an ellipse) and the
 /// step limit, four or more, advanced together by the orbit's Taylor ensemble
 /// (newtop/orbit/orbit_taylor_ensemble.hpp): out[slot] set for each (evaluate_orbit_point's result,

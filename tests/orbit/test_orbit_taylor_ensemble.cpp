@@ -2,7 +2,7 @@
 // trajectory's outcome and observed steps are those of the adaptive driver running
 // OrbitTaylorStepper on it alone, bit for bit, on every instruction set, for any batch size, on
 // circles and ellipses, a model per lane or one for all, forwards and backwards, and where runs end
-// early (the step limit); bad input refused before any work.
+// early (the step limit); the chaos runs against orbit_chaos's; bad input refused before any work.
 
 #include <gtest/gtest.h>
 
@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "newtop/orbit/orbit_chaos.hpp"
 #include "newtop/orbit/orbit_taylor.hpp"
 #include "newtop/orbit/orbit_taylor_ensemble.hpp"
 #include "orbit_problems.hpp"
@@ -131,6 +132,62 @@ TEST(OrbitTaylorEnsemble, RunsThatStopEarlyAreTheScalarRunsBits) {
   const std::vector<OrbitOutcome> out =
       OrbitTaylorEnsemble(1e-9, 1e-9).integrate(models, x, 0.0, 40.0, opt);
   for (const OrbitOutcome& o : out) EXPECT_EQ(o.status, Status::step_limit);
+}
+
+// The chaos runs: each trajectory's outcome and indicators (MEGNO, λ_max, FLI accumulated from the
+// observed renormalisations) are orbit_chaos's with method taylor, bit for bit.
+template <class M, class Time>
+void expect_chaos_bits(const std::vector<M>& models, const std::vector<OrbitState>& x, double a,
+                       double b, double t0, double t1, Time&& time) {
+  const double tol = 1e-10;
+  for (SimdPath path : test::available_paths()) {
+    OrbitTaylorEnsemble e(tol, tol, path);
+    IntegrateOptions opt;  // orbit_chaos's
+    opt.initial_step = std::abs(b - a) / 1000.0;
+    std::vector<phase::ChaosIndicators> ind(x.size(), phase::ChaosIndicators(t0, 1));
+    const std::vector<OrbitOutcome> out = e.integrate_chaos(
+        models, x, a, b, opt, [&](std::size_t p, double v, const OrbitState&, double g) {
+          ind[p].accumulate(time(models[p], v), {g, 0, 0, 0, 0, 0});
+        });
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const std::string where =
+          std::string(simd_path_name(path)) + ", trajectory " + std::to_string(i);
+      OrbitChaosSettings st;
+      st.method = MethodSettings("taylor", 0.0, tol, tol);
+      st.t0 = t0;
+      st.t1 = t1;
+      const OrbitChaosResult r = orbit_chaos(models[i], x[i], st);
+      const phase::ChaosSample c = ind[i].sample();
+      EXPECT_EQ(out[i].status, r.outcome.status) << where;
+      EXPECT_EQ(out[i].t, r.outcome.t) << where;
+      EXPECT_EQ(out[i].state, r.outcome.state) << where;
+      EXPECT_EQ(out[i].steps, r.outcome.steps) << where;
+      EXPECT_EQ(out[i].rejected, r.outcome.rejected) << where;
+      EXPECT_EQ(c.megno, r.indicators.megno) << where;
+      EXPECT_EQ(c.lyapunov_max, r.indicators.lyapunov_max) << where;
+      EXPECT_EQ(c.fli, r.indicators.fli) << where;
+      EXPECT_GT(r.outcome.steps, 20) << where;
+    }
+  }
+}
+
+TEST(OrbitTaylorEnsemble, ChaosRunsAreOrbitChaosBits) {
+  const std::vector<Body> b = bodies(6);
+  const std::vector<OrbitState> x = starts(b);
+  std::vector<CircularOrbitModel> circles;
+  std::vector<EllipticOrbitModel> ellipses;
+  for (const Body& body : b) {
+    circles.emplace_back(body, CircularOrbit::from_rate(0.7));
+    ellipses.emplace_back(body, EllipticOrbit::from_mean_motion(0.7, 0.2, 0.4));
+  }
+  expect_chaos_bits(circles, x, 1.0, 31.0, 1.0, 31.0,
+                    [](const CircularOrbitModel&, double t) { return t; });
+  const EllipticOrbit& o = ellipses[0].orbit();
+  const double nu1 = true_anomaly_at(o, 20.0);
+  expect_chaos_bits(ellipses, x, o.true_anomaly0, nu1, 0.0, 20.0,
+                    [](const EllipticOrbitModel& m, double nu) {
+                      return elapsed_time(m.orbit(), m.orbit().true_anomaly0, nu);
+                    });
 }
 
 TEST(OrbitTaylorEnsemble, RefusesBadInputBeforeAnyWork) {

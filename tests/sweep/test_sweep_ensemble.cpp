@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -127,6 +128,26 @@ TEST(SweepEnsemble, OrbitTaylorFinalStateAndDriftAreEvaluatePointsBits) {
                                                "initial.euler_321[0]", "[1.0, 1.1, 1.2]")));
   expect_point_by_point(ellipse);
   EXPECT_EQ(newtop::sweep::evaluate_point(ellipse, 2).values[0], 3.0);
+}
+
+// MEGNO and λ_max of an orbit scenario with method taylor: every point through the orbit's Taylor
+// ensemble's chaos runs, each evaluate_point's bits (newtop chaos's numbers on that point).
+TEST(SweepEnsemble, OrbitTaylorMegnoIsEvaluatePointsBits) {
+  const std::string base = orbit_taylor_sweep(
+      "satellite_700km.toml", "3000.0", "initial.roll_pitch_yaw[1]", "[1200.0, 1300.0, 1400.0]");
+  const std::string chaos = std::regex_replace(base, std::regex("\\[\"final_state\", \"drift\"\\]"),
+                                               "[\"megno\", \"lyapunov_max\"]");
+  ASSERT_NE(chaos, base);
+  const SweepFile circle = newtop::sweep::load_sweep(write_file("orbit_megno.toml", chaos));
+  expect_point_by_point(circle);
+  const PointResult r = newtop::sweep::evaluate_point(circle, 4);
+  ASSERT_EQ(r.status, "ok");
+  EXPECT_GT(r.values[0], 0.0);  // MEGNO of a run that moved
+  const std::string ell =
+      std::regex_replace(orbit_taylor_sweep("orbit_elliptic_pitch.toml", "3.0",
+                                            "initial.euler_321[0]", "[1.0, 1.1, 1.2]"),
+                         std::regex("\\[\"final_state\", \"drift\"\\]"), "[\"lyapunov_max\"]");
+  expect_point_by_point(newtop::sweep::load_sweep(write_file("orbit_ellipse_megno.toml", ell)));
 }
 
 TEST(SweepEnsemble, FinalStateAloneIsEvaluatePointsBits) {

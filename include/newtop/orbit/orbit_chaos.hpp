@@ -53,6 +53,15 @@ OrbitChaosResult orbit_chaos(const CircularOrbitModel& model, const OrbitState& 
 OrbitChaosResult orbit_chaos(const EllipticOrbitModel& model, const OrbitState& x0,
                              const OrbitChaosSettings& settings);
 
+namespace detail {
+/// The step of a chaos run's one tangent vector after each accepted step (shared with the orbit's
+/// Taylor ensemble): v projected on the tangent space of x's symplectic leaf and renormalised to
+/// unit length; returns the log of the factor it shrank by.
+double orbit_leaf_renormalise(const OrbitState& x, Eigen::Matrix<double, 9, 1>& v);
+/// The start of a chaos run's one tangent vector: the sum of the leaf's six basis vectors / √6.
+Eigen::Matrix<double, 9, 1> orbit_chaos_start(const OrbitState& x0);
+}  // namespace detail
+
 /// The tangent map Φ = ∂x(b)/∂x(a) of the flow from a to b (t, or ν on an ellipse), from the
 /// variational equations with the named method, unrenormalised (for checks against finite
 /// differences of the flow).

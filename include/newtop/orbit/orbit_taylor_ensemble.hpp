@@ -32,6 +32,14 @@ namespace newtop {
 /// interleaved).
 using OrbitEnsembleObserver = std::function<void(std::size_t point, double t, const OrbitState&)>;
 
+/// A tangent vector (δm, δγ, δn) of an orbit trajectory.
+using OrbitVector = Eigen::Matrix<double, 9, 1>;
+
+/// Called after every accepted step of a chaos run with (point, t or ν, state, log of the factor by
+/// which the step's renormalisation shrank the tangent vector).
+using OrbitChaosObserver =
+    std::function<void(std::size_t point, double t, const OrbitState&, double log_growth)>;
+
 /// Taylor's method on many orbit trajectories at once (see the file's comment for the guarantee).
 /// Holds a workspace: one ensemble per thread.
 class OrbitTaylorEnsemble {
@@ -59,6 +67,20 @@ class OrbitTaylorEnsemble {
                                       std::span<const OrbitState> states, double nu0, double nu1,
                                       const IntegrateOptions& options = {},
                                       const OrbitEnsembleObserver& observer = {});
+
+  /// The tangent runs of orbit_chaos (orbit_chaos.hpp) with method taylor and one vector: each
+  /// trajectory carries the vector from detail::orbit_chaos_start, the step rule over the state
+  /// and the vector, the vector projected on the leaf and renormalised after every accepted step
+  /// (detail::orbit_leaf_renormalise), the observer told the log of each factor; each
+  /// trajectory's outcome and observed steps are that run's, bit for bit.
+  std::vector<OrbitOutcome> integrate_chaos(std::span<const CircularOrbitModel> models,
+                                            std::span<const OrbitState> states, double t0,
+                                            double t1, const IntegrateOptions& options,
+                                            const OrbitChaosObserver& observer);
+  std::vector<OrbitOutcome> integrate_chaos(std::span<const EllipticOrbitModel> models,
+                                            std::span<const OrbitState> states, double nu0,
+                                            double nu1, const IntegrateOptions& options,
+                                            const OrbitChaosObserver& observer);
 
  private:
   double abs_tol_, rel_tol_;
