@@ -150,6 +150,9 @@ py::dict integrate_ensemble(const py::object& model_or_models, const py::object&
 py::dict chaos_ensemble(const py::object& model_or_models, const py::object& states_in,
                         double t_end, double tol, double t0,
                         std::optional<std::int64_t> max_steps) {
+  if (is_orbit_models(model_or_models)) {
+    return orbit_chaos_ensemble(model_or_models, states_in, t_end, tol, t0, max_steps);
+  }
   const std::vector<QuadraticModel> models = quadratic_models(model_or_models);
   const std::vector<State> states = states_of(states_in);
   for (const State& x : states) validate(x);
@@ -187,7 +190,8 @@ void bind_ensemble(py::module_& m) {
         "tangent runs: each the bits of newtop.chaos(model, state, t_end, tol=tol, "
         "method='taylor'). Arguments as integrate_ensemble. Returns a dict of arrays (N): megno, "
         "lyapunov_max, fli, and 'outcome' (N strings; the indicators of a run that stopped are "
-        "those up to where it stopped).");
+        "those up to where it stopped). With OrbitModels (states as integrate_ensemble's): each "
+        "the bits of newtop.chaos(model, state, t_end, tol=tol, method='taylor') on the orbit.");
   m.def("integrate_ensemble", &integrate_ensemble, py::arg("model_or_models"), py::arg("states"),
         py::arg("t_end"), py::kw_only(), py::arg("tol"), py::arg("t0") = 0.0,
         py::arg("max_steps") = py::none(), py::arg("t_eval") = py::none(),

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "newtop/orbit/orbit.hpp"
+#include "newtop/orbit/orbit_chaos.hpp"
 #include "newtop/orbit/orbit_taylor_ensemble.hpp"
 
 namespace py = pybind11;
@@ -75,6 +76,18 @@ void run_group(const std::vector<M>& models, const std::vector<OrbitState>& x,
   for (std::size_t j = 0; j < idx.size(); ++j) out[idx[j]] = r[j];
 }
 
+void check_models(const std::vector<OrbitModel>& models, std::size_t states) {
+  if (models.size() != 1 && models.size() != states) {
+    throw InputError("model_or_models: expected 1 or one per state (" + std::to_string(states) +
+                     "), found " + std::to_string(models.size()));
+  }
+  for (const OrbitModel& m : models) {
+    if (m.circular() != models[0].circular()) {
+      throw InputError("model_or_models: expected orbits of one kind, found circular and elliptic");
+    }
+  }
+}
+
 }  // namespace
 
 bool is_orbit_models(const py::object& models) {
@@ -94,15 +107,7 @@ py::dict orbit_integrate_ensemble(const py::object& model_or_models, const py::o
   }
   const std::vector<OrbitModel> models = orbit_models(model_or_models);
   const std::vector<OrbitState> x = orbit_states(states_in);
-  if (models.size() != 1 && models.size() != x.size()) {
-    throw InputError("model_or_models: expected 1 or one per state (" + std::to_string(x.size()) +
-                     "), found " + std::to_string(models.size()));
-  }
-  for (const OrbitModel& m : models) {
-    if (m.circular() != models[0].circular()) {
-      throw InputError("model_or_models: expected orbits of one kind, found circular and elliptic");
-    }
-  }
+  check_models(models, x.size());
   if (!std::isfinite(t0))
     throw InputError("t0: expected a finite time, found " + format_number(t0));
   if (!std::isfinite(t_end) || !(t_end > t0)) {
@@ -175,6 +180,87 @@ py::dict orbit_integrate_ensemble(const py::object& model_or_models, const py::o
   d["outcome"] = outcome;
   d["steps"] = py::array_t<std::int64_t>(N, steps.data());
   d["order"] = check.order();
+  return d;
+}
+
+py::dict orbit_chaos_ensemble(const py::object& model_or_models, const py::object& states_in,
+                              double t_end, double tol, double t0,
+                              std::optional<std::int64_t> max_steps) {
+  const std::vector<OrbitModel> models = orbit_models(model_or_models);
+  const std::vector<OrbitState> x = orbit_states(states_in);
+  check_models(models, x.size());
+  OrbitChaosSettings check;  // orbit_chaos's checks before any work
+  check.method = MethodSettings("taylor", 0.0, tol, tol);
+  check.t0 = t0;
+  check.t1 = t_end;
+  check.max_steps = max_steps.value_or(check.max_steps);
+  check_orbit_chaos_settings(check);
+  if (check.max_steps < 1) {
+    throw InputError("max_steps: expected an integer >= 1, found " +
+                     std::to_string(check.max_steps));
+  }
+  const std::size_t n = x.size();
+  std::vector<OrbitOutcome> out(n);
+  std::vector<phase::ChaosIndicators> ind(n, phase::ChaosIndicators(t0, 1));
+  {
+    const py::gil_scoped_release unlocked;
+    auto model = [&](std::size_t i) -> const OrbitModel& {
+      return models[models.size() == 1 ? 0 : i];
+    };
+    // Points that share the run's start and end (on an ellipse ν0 and ν1) run together; each
+    // point's indicators accumulated at the time of each of its steps, as orbit_chaos does.
+    std::map<std::pair<double, double>, std::vector<std::size_t>> groups;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (model(i).circular()) {
+        groups[{t0, t_end}].push_back(i);
+      } else {
+        const EllipticOrbit& o = std::get<EllipticOrbitModel>(model(i).model).orbit();
+        groups[{o.true_anomaly0, true_anomaly_at(o, t_end - t0)}].push_back(i);
+      }
+    }
+    for (const auto& [span, idx] : groups) {
+      IntegrateOptions o;  // orbit_chaos's
+      o.max_steps = check.max_steps;
+      o.initial_step = std::abs(span.second - span.first) / 1000.0;
+      OrbitTaylorEnsemble e(tol, tol);
+      std::vector<OrbitState> s;
+      for (std::size_t i : idx) s.push_back(x[i]);
+      auto grow = [&](std::size_t j, double t, double g) {
+        ind[idx[j]].accumulate(t, {g, 0.0, 0.0, 0.0, 0.0, 0.0});
+      };
+      std::vector<OrbitOutcome> r;
+      if (models[0].circular()) {
+        std::vector<CircularOrbitModel> m;
+        for (std::size_t i : idx) m.push_back(std::get<CircularOrbitModel>(model(i).model));
+        r = e.integrate_chaos(
+            m, s, span.first, span.second, o,
+            [&](std::size_t j, double t, const OrbitState&, double g) { grow(j, t, g); });
+      } else {
+        std::vector<EllipticOrbitModel> m;
+        for (std::size_t i : idx) m.push_back(std::get<EllipticOrbitModel>(model(i).model));
+        r = e.integrate_chaos(m, s, span.first, span.second, o,
+                              [&](std::size_t j, double nu, const OrbitState&, double g) {
+                                grow(j, t0 + elapsed_time(m[j].orbit(), span.first, nu), g);
+                              });
+      }
+      for (std::size_t j = 0; j < idx.size(); ++j) out[idx[j]] = r[j];
+    }
+  }
+  std::vector<double> megno, lyapunov, fli;
+  py::list outcome;
+  for (std::size_t i = 0; i < n; ++i) {
+    const phase::ChaosSample c = ind[i].sample();
+    megno.push_back(c.megno);
+    lyapunov.push_back(c.lyapunov_max);
+    fli.push_back(c.fli);
+    outcome.append(std::string(to_string(out[i].status)));
+  }
+  const auto N = static_cast<py::ssize_t>(n);
+  py::dict d;
+  d["megno"] = py::array_t<double>(N, megno.data());
+  d["lyapunov_max"] = py::array_t<double>(N, lyapunov.data());
+  d["fli"] = py::array_t<double>(N, fli.data());
+  d["outcome"] = outcome;
   return d;
 }
 

@@ -22,4 +22,11 @@ pybind11::dict orbit_integrate_ensemble(const pybind11::object& model_or_models,
                                         double t0, std::optional<std::int64_t> max_steps,
                                         bool t_eval);
 
+/// The chaos indicators of each satellite through the orbit's Taylor ensemble's chaos runs: a
+/// dict of megno, lyapunov_max, fli (N) and outcome, each the bits of newtop.chaos(model, state,
+/// t_end, tol=tol, method='taylor', t0=t0).
+pybind11::dict orbit_chaos_ensemble(const pybind11::object& model_or_models,
+                                    const pybind11::object& states, double t_end, double tol,
+                                    double t0, std::optional<std::int64_t> max_steps);
+
 }  // namespace newtop::python

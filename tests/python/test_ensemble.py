@@ -149,3 +149,16 @@ def test_orbit_ensemble_refuses_bad_input():
         newtop.integrate_ensemble(circ[0], states, -1.0, tol=TOL)
     with pytest.raises(ValueError, match="tol"):
         newtop.integrate_ensemble(circ[0], states, 1.0, tol=0.0)
+
+
+@pytest.mark.parametrize("kind", ["circular", "elliptic"])
+def test_each_satellites_chaos_is_the_scalar_run(kind):
+    rng = np.random.default_rng(300)
+    models, states = orbit_satellites(kind, 6, rng)
+    out = newtop.chaos_ensemble(models, states, 12.0, tol=TOL)
+    for i in range(6):
+        one = newtop.chaos(models[i], states[i], 12.0, tol=TOL, method="taylor")
+        assert out["outcome"][i] == one.outcome == "finished"
+        assert out["megno"][i] == one.megno, (kind, i)
+        assert out["lyapunov_max"][i] == one.lyapunov_max and out["fli"][i] == one.fli
+    assert np.all(np.isfinite(out["megno"]))
