@@ -171,6 +171,21 @@ double orbit_taylor_step(const OrbitTaylorSeries& s, double abs_tol, double rel_
   return taylor_step_from_norms(norms.data(), s.order, abs_tol, rel_tol);
 }
 
+double orbit_tangent_step(const OrbitTaylorSeries& s, const OrbitTangentSeries& ts, double abs_tol,
+                          double rel_tol) {
+  std::array<double, OrbitTaylorSeries::kMaxOrder + 1> norms{};
+  for (int k = 0; k <= s.order; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    double r = max_norm(s.x[i]);
+    for (int c = 0; c < ts.columns && !std::isnan(r); ++c) {
+      const double v = max_norm(ts.v[static_cast<std::size_t>(c)][i]);
+      r = std::isnan(v) ? v : std::max(r, v);
+    }
+    norms[i] = r;
+  }
+  return taylor_step_from_norms(norms.data(), s.order, abs_tol, rel_tol);
+}
+
 }  // namespace detail
 
 OrbitTaylorStepper::OrbitTaylorStepper(double abs_tol, double rel_tol, int order)

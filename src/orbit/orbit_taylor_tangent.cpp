@@ -10,11 +10,8 @@
 // sums along the state's series. The step rule takes the max norm of each order over the state and
 // the vectors.
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 
-#include "newtop/integrate/taylor.hpp"
 #include "newtop/orbit/orbit_taylor.hpp"
 
 namespace newtop::detail {
@@ -91,15 +88,6 @@ void expand_columns(const Body& body, const OrbitTaylorSeries& s, OrbitTangentSe
   }
 }
 
-double max_norm(const std::array<double, 9>& v) {
-  double r = 0.0;
-  for (double c : v) {
-    if (std::isnan(c)) return std::numeric_limits<double>::quiet_NaN();
-    r = std::max(r, std::abs(c));
-  }
-  return r;
-}
-
 }  // namespace
 
 void orbit_taylor_expand_tangent(const CircularOrbitModel& model, const OrbitTaylorSeries& s,
@@ -140,21 +128,6 @@ std::array<double, 9> orbit_tangent_sum(const OrbitTangentSeries& ts, int c, dou
     for (std::size_t i = 0; i < 9; ++i) y[i] = y[i] * h + a[i];
   }
   return y;
-}
-
-double orbit_tangent_step(const OrbitTaylorSeries& s, const OrbitTangentSeries& ts, double abs_tol,
-                          double rel_tol) {
-  std::array<double, K> norms{};
-  for (int k = 0; k <= s.order; ++k) {
-    const auto i = static_cast<std::size_t>(k);
-    double r = max_norm(s.x[i]);
-    for (int c = 0; c < ts.columns && !std::isnan(r); ++c) {
-      const double v = max_norm(ts.v[static_cast<std::size_t>(c)][i]);
-      r = std::isnan(v) ? v : std::max(r, v);
-    }
-    norms[i] = r;
-  }
-  return taylor_step_from_norms(norms.data(), s.order, abs_tol, rel_tol);
 }
 
 }  // namespace newtop::detail
