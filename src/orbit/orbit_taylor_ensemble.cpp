@@ -208,9 +208,9 @@ class BatchRun {
   // the leaf before the driver's check that the trial is finite).
   void step(std::size_t l) {
     LaneRun& r = lanes_[l];
-    detail::OrbitTaylorSeries s;
+    detail::OrbitTaylorSeries& s = lane_series_;
+    detail::OrbitTangentSeries& ts = lane_tangent_;
     lane_series(l, s);
-    detail::OrbitTangentSeries ts;
     if (chaos_) lane_tangent(l, ts);
     const double step = chaos_ ? detail::orbit_tangent_step(s, ts, abs_tol_, rel_tol_)
                                : detail::orbit_taylor_step(s, abs_tol_, rel_tol_);
@@ -287,6 +287,9 @@ class BatchRun {
   std::vector<OrbitOutcome> outcomes_;
   std::size_t next_ = 0;
   double *consts_ = nullptr, *x_ = nullptr, *v_ = nullptr, *series_ = nullptr, *tangent_ = nullptr;
+  // One lane's series as the scalar stepper holds them (held here: the tangent's is 20 kB).
+  detail::OrbitTaylorSeries lane_series_;
+  detail::OrbitTangentSeries lane_tangent_;
 };
 
 template <class M>
