@@ -265,7 +265,7 @@ class BatchRun {
     set_state(l, trial);
     if (chaos_) {
       set_vector(l, v);
-      (*chaos_)(r.point, r.t, trial, growth);
+      if (*chaos_) (*chaos_)(r.point, r.t, trial, growth);
     } else if (obs_) {
       obs_(r.point, r.t, trial);
     }
@@ -351,19 +351,15 @@ std::vector<OrbitOutcome> OrbitTaylorEnsemble::integrate(std::span<const Ellipti
 std::vector<OrbitOutcome> OrbitTaylorEnsemble::integrate_chaos(
     std::span<const CircularOrbitModel> models, std::span<const OrbitState> states, double t0,
     double t1, const IntegrateOptions& options, const OrbitChaosObserver& observer) {
-  const OrbitChaosObserver on_step =
-      observer ? observer : [](std::size_t, double, const OrbitState&, double) {};
   return run_batch(*this, models, states, t0, t1, options, {}, abs_tol_, rel_tol_, workspace_,
-                   &on_step);
+                   &observer);
 }
 
 std::vector<OrbitOutcome> OrbitTaylorEnsemble::integrate_chaos(
     std::span<const EllipticOrbitModel> models, std::span<const OrbitState> states, double nu0,
     double nu1, const IntegrateOptions& options, const OrbitChaosObserver& observer) {
-  const OrbitChaosObserver on_step =
-      observer ? observer : [](std::size_t, double, const OrbitState&, double) {};
   return run_batch(*this, models, states, nu0, nu1, options, {}, abs_tol_, rel_tol_, workspace_,
-                   &on_step);
+                   &observer);
 }
 
 }  // namespace newtop
